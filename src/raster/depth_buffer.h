@@ -1,0 +1,46 @@
+#pragma once
+// The eye pass's output: depth per pixel and, per tile of 2^n x 2^n pixels (n = 1..8), the
+// minimum and maximum depth of the tile (the z-min/z-max of the 2004 paper, section 4).
+//
+// Depth is reversed-Z (core/view.h): 1 at the near plane, smaller is farther, 0 is infinity
+// and marks pixels no triangle covered (background). Tile z-min/z-max cover only the pixels
+// inside the image; a tile of only background pixels has z-min = z-max = 0.
+#include <array>
+#include <cstdint>
+
+#include "core/image.h"
+
+namespace penumbra {
+
+inline constexpr int kMinTileLevel = 1;  // 2x2 tiles
+inline constexpr int kMaxTileLevel = 8;  // 256x256 tiles
+
+struct TileDepthRange {
+  int level = 0;  // tile size is 1 << level pixels
+  Image<float> zmin;  // one entry per tile, tiles in row-major order
+  Image<float> zmax;
+};
+
+struct DepthBuffer {
+  Image<float> depth;
+  std::array<TileDepthRange, kMaxTileLevel + 1> tiles;  // indexed by level; [0] unused
+
+  int width() const { return depth.width(); }
+  int height() const { return depth.height(); }
+  // Rebuilds tiles[kMinTileLevel..kMaxTileLevel] from `depth`.
+  void buildTileRanges();
+  const TileDepthRange& tileRange(int level) const;
+};
+
+// Per-pixel surface identity for shading and for techniques that need the visible surface's
+// orientation (the oracle offsets its rays off the surface toward the eye).
+inline constexpr uint32_t kNoPrimitive = 0xffffffffu;
+
+struct EyeBuffers {
+  DepthBuffer depth;
+  // Global triangle id: triangles are numbered mesh after mesh in Scene::meshes order;
+  // kNoPrimitive where the background shows.
+  Image<uint32_t> primitive;
+};
+
+}  // namespace penumbra

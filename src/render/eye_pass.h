@@ -1,0 +1,14 @@
+#pragma once
+#include "core/stats.h"
+#include "core/view.h"
+#include "raster/depth_buffer.h"
+#include "scene/scene.h"
+
+namespace penumbra {
+
+// Rasterizes every triangle of the scene from the eye: depth (reversed-Z, infinite far plane),
+// per-tile z-min/z-max and the visible triangle of every pixel. Closed meshes are back-face
+// culled; open ones are drawn two-sided so their inside shows. Counters go to `stats`.
+EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, bool simd = true);
+
+}  // namespace penumbra

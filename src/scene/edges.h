@@ -1,0 +1,39 @@
+#pragma once
+// Edge adjacency by pairing directed edges (the approach of Doom 3 BFG's shadow volumes):
+// every undirected edge {a, b} lists the triangles that use it and in which direction. A
+// triangle traversing a->b with a < b counts +1, b->a counts -1. For a closed, consistently
+// oriented manifold every edge has one of each. Open edges (one triangle), edges of three or
+// more triangles, and edges two triangles traverse the same way are all kept; the silhouette
+// code sums signed contributions so shadow volumes stay balanced for all of them.
+#include <cstdint>
+#include <vector>
+
+#include "scene/mesh.h"
+
+namespace penumbra {
+
+struct EdgeUse {
+  uint32_t triangle;
+  int8_t sign;  // +1: the triangle traverses v0 -> v1; -1: v1 -> v0
+};
+
+struct Edge {
+  uint32_t v0, v1;        // v0 < v1 (welded vertex indices)
+  uint32_t first_use;     // index into EdgeAdjacency::uses
+  uint32_t use_count;
+};
+
+struct EdgeAdjacency {
+  std::vector<Edge> edges;
+  std::vector<EdgeUse> uses;
+  // Diagnostics, for scene summaries and tests.
+  size_t open_edges = 0;          // used by exactly one triangle
+  size_t non_manifold_edges = 0;  // used by three or more triangles
+  size_t inconsistent_edges = 0;  // used by two triangles traversing it the same way
+};
+
+// Builds the adjacency of `mesh` (degenerate triangles, with a repeated index, are skipped) and
+// sets mesh.closed.
+EdgeAdjacency buildEdges(Mesh& mesh);
+
+}  // namespace penumbra
