@@ -1,0 +1,121 @@
+#include "raster/rasterizer.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <vector>
+
+#include "core/parallel.h"
+#include "raster/binning.h"
+#include "raster/fixed_point.h"
+#include "raster/tile_kernels.h"
+
+namespace penumbra {
+namespace {
+
+struct TileCounts {
+  KernelCounts kernel;
+  uint64_t tested = 0;
+  uint64_t culled = 0;
+};
+
+struct TileBox {
+  int x0, y0, x1, y1;  // inclusive pixels
+};
+
+TileBox tileBox(const TileBins& bins, size_t tile, int width, int height) {
+  const int tx = int(tile % size_t(bins.tiles_x)), ty = int(tile / size_t(bins.tiles_x));
+  const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
+  return {x0, y0, std::min(width, x0 + kBinTileSize) - 1, std::min(height, y0 + kBinTileSize) - 1};
+}
+
+void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are_stencil) {
+  for (const TileCounts& t : tiles) {
+    stats.pixels_rasterized += t.kernel.covered;
+    stats.z_reads += t.kernel.covered;
+    if (writes_are_stencil) stats.stencil_writes += t.kernel.writes;
+    stats.tiles_tested += t.tested;
+    stats.tiles_culled += t.culled;
+  }
+}
+
+// True when no pixel of the tile can pass the triangle's depth rule (rasterizer.h,
+// StencilOptions::tile_culling). The triangle's depth over the tile is bounded by its plane at
+// the tile's corners, widened by the float error of the kernels' evaluation (tile_kernels.h)
+// so culling never changes a pixel.
+bool cullTile(const SetupTriangle& t, const TileEdges& e, float zmin, float zmax) {
+  if (zmax <= 0.0f) return true;  // only background: nothing to shadow
+  auto plane = [&](int x, int y) { return t.a * (x + 0.5) + t.b * (y + 0.5) + t.c; };
+  const double c00 = plane(e.x0, e.y0), c10 = plane(e.x1, e.y0);
+  const double c01 = plane(e.x0, e.y1), c11 = plane(e.x1, e.y1);
+  const double error = 8.0 * FLT_EPSILON *
+                       (std::fabs(e.dc) + kBinTileSize * (std::fabs(e.da) + std::fabs(e.db))) +
+                       1e-30;
+  const double lo = std::min({c00, c10, c01, c11}) - error;
+  const double hi = std::max({c00, c10, c01, c11}) + error;
+  if (t.flags & kZFail) return lo > double(zmax);  // entirely in front of every pixel
+  return hi <= double(zmin);                         // entirely behind or at every pixel
+}
+
+}  // namespace
+
+void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
+                    Image<uint32_t>& primitive, Stats& stats, bool simd) {
+  const int width = depth.width(), height = depth.height();
+  const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
+  const TileBins bins = binTriangles(setup, width, height);
+  std::vector<TileCounts> counts(bins.tileCount());
+  const DepthTarget target{depth.data(), primitive.data(), width};
+  parallelFor(bins.tileCount(), [&](size_t tile) {
+    const TileBox box = tileBox(bins, tile, width, height);
+    TileCounts& c = counts[tile];
+    for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
+      const SetupTriangle& t = setup[bins.triangles[k]];
+      TileEdges e;
+      ++c.tested;
+      if (!setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e)) {
+        ++c.culled;
+        continue;
+      }
+      depthKernel(e, uint32_t(t.payload), target, c.kernel, simd);
+    }
+  });
+  sumInto(counts, stats, false);
+  stats.triangles += setup.size();
+}
+
+void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
+                      Image<int32_t>& stencil, Stats& stats, const StencilOptions& options) {
+  const int width = depth.width(), height = depth.height();
+  PENUMBRA_CHECK(stencil.width() == width && stencil.height() == height,
+                 "stencil {}x{} does not match depth {}x{}", stencil.width(), stencil.height(),
+                 width, height);
+  const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
+  const TileBins bins = binTriangles(setup, width, height);
+  const TileDepthRange& ranges = depth.tileRange(kBinTileLevel);
+  std::vector<TileCounts> counts(bins.tileCount());
+  const StencilTarget target{depth.depth.data(), stencil.data(), width};
+  parallelFor(bins.tileCount(), [&](size_t tile) {
+    const TileBox box = tileBox(bins, tile, width, height);
+    const float zmin = ranges.zmin[tile], zmax = ranges.zmax[tile];
+    TileCounts& c = counts[tile];
+    for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
+      const SetupTriangle& t = setup[bins.triangles[k]];
+      TileEdges e;
+      ++c.tested;
+      if (!setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e) ||
+          (options.tile_culling && cullTile(t, e, zmin, zmax))) {
+        ++c.culled;
+        continue;
+      }
+      const bool zfail = (t.flags & kZFail) != 0;
+      const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
+      stencilKernel(e, contribution, zfail ? DepthRule::NotCloser : DepthRule::Closer, target,
+                    c.kernel, options.simd);
+    }
+  });
+  sumInto(counts, stats, true);
+  stats.triangles += setup.size();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,70 @@
+#pragma once
+// Per-(triangle, tile) pixel kernels: the hot loops of every pass. Each kernel has a SIMD
+// version (Highway, 4 to 16 pixels per step, dispatched at run time) and a scalar twin that
+// follows the same steps and must give bit-identical buffers and counts (tests check it).
+#include <cstdint>
+
+#include "raster/triangle_setup.h"
+
+namespace penumbra {
+
+// A triangle's edge functions and depth restricted to one tile, in int32 and float.
+// Pixel (x, y) of the rect is inside iff for all i: e0[i] + dx[i] (x - tx0) + dy[i] (y - ty0) >= 0
+// (edges the whole rect is inside of are folded to e0 = dx = dy = 0). Its depth is
+//   (dc + db * float(y - ty0)) + da * float(x - tx0)
+// evaluated in exactly this order in both twins (no FMA: the build passes -ffp-contract=off).
+struct TileEdges {
+  int32_t e0[3], dx[3], dy[3];
+  float dc, da, db;
+  int tx0, ty0;          // tile origin pixel
+  int x0, y0, x1, y1;    // pixels to visit, inclusive: triangle box within the tile
+};
+
+// Prepares `t` for the tile whose pixels are [tx0, tx1] x [ty0, ty1]; false when the triangle
+// misses the tile entirely (an edge is negative at all four rect corners).
+bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out);
+
+// Where a kernel reads and writes: row-major buffers of the full image.
+struct DepthTarget {
+  float* depth;
+  uint32_t* primitive;
+  int stride;
+};
+struct StencilTarget {
+  const float* depth;
+  int32_t* stencil;
+  int stride;
+};
+
+enum class DepthRule : uint8_t {
+  Closer,        // z-pass: count where the primitive is strictly in front of the stored depth
+  NotCloser,     // z-fail: count where it is behind or at the stored depth
+};
+
+struct KernelCounts {
+  uint64_t covered = 0;  // pixels inside the triangle
+  uint64_t writes = 0;   // pixels written
+};
+
+// Eye pass: depth test (strictly closer wins, so the first drawn of equal depths stays) and
+// write of depth and primitive id.
+void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
+                 KernelCounts& counts, bool simd);
+
+// Shadow volumes: for covered pixels with a surface (stored depth > 0), adds `contribution` to
+// the stencil where the depth rule holds. Every covered pixel reads the depth once.
+void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
+                   const StencilTarget& target, KernelCounts& counts, bool simd);
+
+// The scalar twins, also used by the scalar-only build.
+void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
+                       KernelCounts& counts);
+void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rule,
+                         const StencilTarget& target, KernelCounts& counts);
+
+// True when the SIMD kernels are compiled in (not a PENUMBRA_SCALAR_ONLY build).
+bool simdKernelsAvailable();
+// Name of the SIMD target chosen at run time (e.g. "AVX2"), or "scalar".
+const char* simdTargetName();
+
+}  // namespace penumbra

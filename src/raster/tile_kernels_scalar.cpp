@@ -1,0 +1,91 @@
+#include <algorithm>
+
+#include "raster/fixed_point.h"
+#include "raster/tile_kernels.h"
+
+namespace penumbra {
+
+bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out) {
+  out.x0 = std::max(tx0, t.min_x);
+  out.y0 = std::max(ty0, t.min_y);
+  out.x1 = std::min(tx1, t.max_x);
+  out.y1 = std::min(ty1, t.max_y);
+  if (out.x0 > out.x1 || out.y0 > out.y1) return false;
+  out.tx0 = tx0;
+  out.ty0 = ty0;
+  for (int i = 0; i < 3; ++i) {
+    const int64_t A = t.A[i], B = t.B[i], C = t.C[i];
+    auto edge = [&](int x, int y) { return A * pixelCentre(x) + B * pixelCentre(y) + C; };
+    const int64_t c00 = edge(out.x0, out.y0), c10 = edge(out.x1, out.y0);
+    const int64_t c01 = edge(out.x0, out.y1), c11 = edge(out.x1, out.y1);
+    const int64_t lo = std::min({c00, c10, c01, c11}), hi = std::max({c00, c10, c01, c11});
+    if (hi < 0) return false;
+    if (lo >= 0) {  // the whole rect is inside this edge
+      out.e0[i] = out.dx[i] = out.dy[i] = 0;
+      continue;
+    }
+    // The edge crosses the rect, which lies in one bin tile: int32 holds it (fixed_point.h).
+    out.e0[i] = int32_t(edge(tx0, ty0));
+    out.dx[i] = int32_t(A * kSubpixelSteps);
+    out.dy[i] = int32_t(B * kSubpixelSteps);
+  }
+  // Depth at the tile origin's pixel centre in double, then float steps from there: keeps the
+  // float terms small so the float evaluation stays within a few ulps of the plane.
+  out.dc = float(t.a * (tx0 + 0.5) + t.b * (ty0 + 0.5) + t.c);
+  out.da = float(t.a);
+  out.db = float(t.b);
+  return true;
+}
+
+void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
+                       KernelCounts& counts) {
+  for (int y = e.y0; y <= e.y1; ++y) {
+    const int ry = y - e.ty0;
+    const float row_depth = e.dc + e.db * float(ry);
+    const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
+                  r2 = e.e0[2] + e.dy[2] * ry;
+    float* depth_row = target.depth + size_t(y) * target.stride;
+    uint32_t* id_row = target.primitive + size_t(y) * target.stride;
+    for (int x = e.x0; x <= e.x1; ++x) {
+      const int rx = x - e.tx0;
+      const bool inside = (r0 + e.dx[0] * rx) >= 0 && (r1 + e.dx[1] * rx) >= 0 &&
+                          (r2 + e.dx[2] * rx) >= 0;
+      if (!inside) continue;
+      ++counts.covered;
+      const float d = row_depth + e.da * float(rx);
+      if (d > depth_row[x]) {
+        depth_row[x] = d;
+        id_row[x] = primitive;
+        ++counts.writes;
+      }
+    }
+  }
+}
+
+void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rule,
+                         const StencilTarget& target, KernelCounts& counts) {
+  for (int y = e.y0; y <= e.y1; ++y) {
+    const int ry = y - e.ty0;
+    const float row_depth = e.dc + e.db * float(ry);
+    const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
+                  r2 = e.e0[2] + e.dy[2] * ry;
+    const float* depth_row = target.depth + size_t(y) * target.stride;
+    int32_t* stencil_row = target.stencil + size_t(y) * target.stride;
+    for (int x = e.x0; x <= e.x1; ++x) {
+      const int rx = x - e.tx0;
+      const bool inside = (r0 + e.dx[0] * rx) >= 0 && (r1 + e.dx[1] * rx) >= 0 &&
+                          (r2 + e.dx[2] * rx) >= 0;
+      if (!inside) continue;
+      ++counts.covered;
+      const float stored = depth_row[x];
+      const float d = row_depth + e.da * float(rx);
+      const bool pass = rule == DepthRule::Closer ? d > stored : d <= stored;
+      if (stored > 0.0f && pass) {
+        stencil_row[x] += contribution;
+        ++counts.writes;
+      }
+    }
+  }
+}
+
+}  // namespace penumbra

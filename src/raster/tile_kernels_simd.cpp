@@ -1,0 +1,164 @@
+// SIMD twins of tile_kernels_scalar.cpp, compiled once per CPU target by Highway and chosen at
+// run time (HWY_DYNAMIC_DISPATCH). Same steps, same operation order, same results.
+#include "raster/tile_kernels.h"
+
+#ifndef PENUMBRA_SCALAR_ONLY
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/tile_kernels_simd.cpp"
+#include <hwy/foreach_target.h>  // re-includes this file once per target
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace penumbra {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Edge values of one row's first lanes and the per-lane offsets dx * lane, shared by kernels.
+struct RowEdges {
+  int32_t start[3];
+};
+
+template <class DI>
+HWY_INLINE auto insideMask(DI di, const TileEdges& e, const RowEdges& row, int rx,
+                           const hn::Vec<DI> (&lane_step)[3]) {
+  const auto minus_one = hn::Set(di, -1);
+  auto m = hn::Gt(hn::Add(hn::Set(di, row.start[0] + e.dx[0] * rx), lane_step[0]), minus_one);
+  m = hn::And(m, hn::Gt(hn::Add(hn::Set(di, row.start[1] + e.dx[1] * rx), lane_step[1]), minus_one));
+  m = hn::And(m, hn::Gt(hn::Add(hn::Set(di, row.start[2] + e.dx[2] * rx), lane_step[2]), minus_one));
+  return m;
+}
+
+void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
+                     KernelCounts& counts) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const hn::RebindToUnsigned<decltype(df)> du;
+  const int lanes = int(hn::Lanes(df));
+  const auto iota_i = hn::Iota(di, 0);
+  const hn::Vec<decltype(di)> lane_step[3] = {hn::Mul(hn::Set(di, e.dx[0]), iota_i),
+                                              hn::Mul(hn::Set(di, e.dx[1]), iota_i),
+                                              hn::Mul(hn::Set(di, e.dx[2]), iota_i)};
+  const auto id = hn::Set(du, primitive);
+  const auto da = hn::Set(df, e.da);
+  for (int y = e.y0; y <= e.y1; ++y) {
+    const int ry = y - e.ty0;
+    const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
+    const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
+    float* depth_row = target.depth + size_t(y) * target.stride;
+    uint32_t* id_row = target.primitive + size_t(y) * target.stride;
+    for (int x = e.x0; x <= e.x1; x += lanes) {
+      const int rx = x - e.tx0;
+      const auto in_row = hn::FirstN(di, size_t(e.x1 - x + 1));
+      const auto inside_i = hn::And(insideMask(di, e, row, rx, lane_step), in_row);
+      if (hn::AllFalse(di, inside_i)) continue;
+      const auto inside = hn::RebindMask(df, inside_i);
+      counts.covered += hn::CountTrue(df, inside);
+      const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
+      const auto stored = hn::MaskedLoad(inside, df, depth_row + x);
+      const auto write = hn::And(inside, hn::Gt(d, stored));
+      if (hn::AllFalse(df, write)) continue;
+      counts.writes += hn::CountTrue(df, write);
+      hn::BlendedStore(d, write, df, depth_row + x);
+      hn::BlendedStore(id, hn::RebindMask(du, write), du, id_row + x);
+    }
+  }
+}
+
+void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
+                       const StencilTarget& target, KernelCounts& counts) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const int lanes = int(hn::Lanes(df));
+  const auto iota_i = hn::Iota(di, 0);
+  const hn::Vec<decltype(di)> lane_step[3] = {hn::Mul(hn::Set(di, e.dx[0]), iota_i),
+                                              hn::Mul(hn::Set(di, e.dx[1]), iota_i),
+                                              hn::Mul(hn::Set(di, e.dx[2]), iota_i)};
+  const auto add = hn::Set(di, contribution);
+  const auto da = hn::Set(df, e.da);
+  const auto zero = hn::Zero(df);
+  for (int y = e.y0; y <= e.y1; ++y) {
+    const int ry = y - e.ty0;
+    const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
+    const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
+    const float* depth_row = target.depth + size_t(y) * target.stride;
+    int32_t* stencil_row = target.stencil + size_t(y) * target.stride;
+    for (int x = e.x0; x <= e.x1; x += lanes) {
+      const int rx = x - e.tx0;
+      const auto in_row = hn::FirstN(di, size_t(e.x1 - x + 1));
+      const auto inside_i = hn::And(insideMask(di, e, row, rx, lane_step), in_row);
+      if (hn::AllFalse(di, inside_i)) continue;
+      const auto inside = hn::RebindMask(df, inside_i);
+      counts.covered += hn::CountTrue(df, inside);
+      const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
+      const auto stored = hn::MaskedLoad(inside, df, depth_row + x);
+      const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
+      const auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
+      if (hn::AllFalse(df, write)) continue;
+      counts.writes += hn::CountTrue(df, write);
+      const auto write_i = hn::RebindMask(di, write);
+      const auto s = hn::MaskedLoad(write_i, di, stencil_row + x);
+      hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + x);
+    }
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace penumbra
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace penumbra {
+
+HWY_EXPORT(DepthKernelSimd);
+HWY_EXPORT(StencilKernelSimd);
+
+void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
+                 KernelCounts& counts, bool simd) {
+  if (simd) {
+    HWY_DYNAMIC_DISPATCH(DepthKernelSimd)(e, primitive, target, counts);
+  } else {
+    depthKernelScalar(e, primitive, target, counts);
+  }
+}
+
+void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
+                   const StencilTarget& target, KernelCounts& counts, bool simd) {
+  if (simd) {
+    HWY_DYNAMIC_DISPATCH(StencilKernelSimd)(e, contribution, rule, target, counts);
+  } else {
+    stencilKernelScalar(e, contribution, rule, target, counts);
+  }
+}
+
+bool simdKernelsAvailable() { return true; }
+
+// Highway orders targets best-first by lowest bit; dispatch picks the best one compiled in.
+const char* simdTargetName() {
+  const int64_t targets = hwy::SupportedTargets() & HWY_TARGETS;
+  return hwy::TargetName(targets & -targets);
+}
+
+}  // namespace penumbra
+#endif  // HWY_ONCE
+
+#else  // PENUMBRA_SCALAR_ONLY
+
+namespace penumbra {
+
+void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
+                 KernelCounts& counts, bool) {
+  depthKernelScalar(e, primitive, target, counts);
+}
+
+void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
+                   const StencilTarget& target, KernelCounts& counts, bool) {
+  stencilKernelScalar(e, contribution, rule, target, counts);
+}
+
+bool simdKernelsAvailable() { return false; }
+const char* simdTargetName() { return "scalar"; }
+
+}  // namespace penumbra
+
+#endif  // PENUMBRA_SCALAR_ONLY

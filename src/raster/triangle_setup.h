@@ -1,0 +1,54 @@
+#pragma once
+// Clipping, snapping and edge/depth setup of triangles given in clip space.
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+
+namespace penumbra {
+
+// Triangles to rasterize: clip-space vertices (core/view.h conventions) and, per triangle, a
+// payload the pass interprets (a primitive id for the eye pass, a signed stencil weight for
+// shadow volumes) and flags.
+struct ClipTriangles {
+  std::vector<vec4> clip;           // clip-space vertices
+  std::vector<uint32_t> indices;    // 3 per triangle
+  std::vector<int32_t> payload;     // 1 per triangle
+  std::vector<uint8_t> flags;       // 1 per triangle, kCullBackFace...; may be empty (= 0)
+
+  size_t size() const { return payload.size(); }
+  void add(uint32_t i0, uint32_t i1, uint32_t i2, int32_t value, uint8_t flag = 0) {
+    indices.insert(indices.end(), {i0, i1, i2});
+    payload.push_back(value);
+    flags.push_back(flag);
+  }
+};
+
+inline constexpr uint8_t kCullBackFace = 1;  // drop the triangle when the eye sees its back
+inline constexpr uint8_t kZFail = 2;         // shadow volumes: count from infinity (z-fail)
+
+// A triangle ready for the pixel kernels, in screen space.
+struct SetupTriangle {
+  // Edge functions in 28.4 units: pixel (x, y) is inside iff for all i
+  //   A[i] * (16x + 8) + B[i] * (16y + 8) + C[i] >= 0.
+  // C includes the top-left fill-rule bias, so an edge two triangles share is covered by
+  // exactly one of them (a pixel centre on a left or top edge belongs to the triangle).
+  int32_t A[3], B[3];
+  int64_t C[3];
+  // Depth plane over pixel coordinates: depth(sx, sy) = a sx + b sy + c, sx, sy in pixels,
+  // reversed-Z (core/view.h). Computed from the snapped vertices in the input vertex order, so a
+  // triangle drawn twice (eye pass and shadow-volume light cap) gets bit-identical depths.
+  double a, b, c;
+  float depth_min, depth_max;    // over the vertices
+  int32_t min_x, min_y, max_x, max_y;  // covered pixel box, inclusive, clamped to the image
+  int32_t payload;               // the input triangle's payload
+  int8_t facing;                 // +1 when the eye sees the front (counter-clockwise) side
+  uint8_t flags;                 // the input triangle's flags
+};
+
+// Clips each input triangle to the near plane and the guard band, snaps to 28.4 and sets it up.
+// Output keeps input order (a clipped triangle's fan pieces stay together), so passes that
+// resolve ties by drawing order are deterministic. Zero-area and off-screen triangles vanish.
+std::vector<SetupTriangle> setupTriangles(const ClipTriangles& triangles, int width, int height);
+
+}  // namespace penumbra
