@@ -68,8 +68,9 @@ int clipPolygon(std::array<dvec4, 8>& poly, int count, const ClipPlanes& clip_pl
 }
 
 struct ScreenVertex {
-  int64_t x, y;   // 28.4
-  double depth;   // reversed-Z
+  int64_t x, y;     // 28.4, snapped: coverage
+  double sx, sy;    // pixels, unsnapped: depth plane
+  double depth;     // reversed-Z
 };
 
 // Sets up one (already clipped) triangle; returns false when it covers no pixel.
@@ -82,15 +83,18 @@ bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex
   const int8_t facing = area2 < 0 ? 1 : -1;
   if ((flags & kCullBackFace) && facing < 0) return false;
 
-  // Depth plane from the vertices in input order (see SetupTriangle::a).
+  // Depth plane from the unsnapped vertices, in input order (see SetupTriangle::a). Snapped
+  // vertices would tilt small triangles' planes by up to 1/32 pixel over their size: enough to
+  // reorder a surface and the shadow-volume quad grazing it near the light's terminator.
   {
-    const double x1 = double(v1.x - v0.x) / kSubpixelSteps, y1 = double(v1.y - v0.y) / kSubpixelSteps;
-    const double x2 = double(v2.x - v0.x) / kSubpixelSteps, y2 = double(v2.y - v0.y) / kSubpixelSteps;
+    const double x1 = v1.sx - v0.sx, y1 = v1.sy - v0.sy;
+    const double x2 = v2.sx - v0.sx, y2 = v2.sy - v0.sy;
     const double d1 = v1.depth - v0.depth, d2 = v2.depth - v0.depth;
     const double det = x1 * y2 - x2 * y1;
+    if (det == 0.0) return false;  // covers pixels only through snapping: no plane to give
     t.a = (d1 * y2 - d2 * y1) / det;
     t.b = (x1 * d2 - x2 * d1) / det;
-    t.c = v0.depth - t.a * (double(v0.x) / kSubpixelSteps) - t.b * (double(v0.y) / kSubpixelSteps);
+    t.c = v0.depth - t.a * v0.sx - t.b * v0.sy;
   }
   t.depth_min = float(std::min({v0.depth, v1.depth, v2.depth}));
   t.depth_max = float(std::max({v0.depth, v1.depth, v2.depth}));
@@ -133,7 +137,7 @@ ScreenVertex toScreen(const dvec4& c, int width, int height) {
   const double inv_w = 1.0 / c.w;
   const double sx = (c.x * inv_w * 0.5 + 0.5) * width;
   const double sy = (0.5 - c.y * inv_w * 0.5) * height;
-  return {std::llround(sx * kSubpixelSteps), std::llround(sy * kSubpixelSteps), c.z * inv_w};
+  return {std::llround(sx * kSubpixelSteps), std::llround(sy * kSubpixelSteps), sx, sy, c.z * inv_w};
 }
 
 void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, int height,

@@ -30,9 +30,12 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
       for (size_t i = chunk * 4096; i < end; ++i)
         tris.clip[base + i] = view.toClip(vec4(mesh.positions[i], 1.0f));
     });
-    // Closed meshes only show their outside, unless the eye is inside them (then nothing of the
-    // mesh is drawn, as in any renderer that culls back faces).
-    const uint8_t flags = mesh.closed ? kCullBackFace : 0;
+    // No back-face culling, not even for closed meshes: the stored depth must be the closest of
+    // every triangle, because shadow-volume light caps are those same triangles drawn again
+    // with bit-identical depth. A culled back face can round a hair closer than the front face
+    // at an eye silhouette, and z-fail would then see a cap in front of the visible point,
+    // breaking the identity z-pass == z-fail.
+    const uint8_t flags = 0;
     for (size_t t = 0; t < mesh.triangleCount(); ++t, ++global_id) {
       tris.add(uint32_t(base + mesh.indices[t * 3]), uint32_t(base + mesh.indices[t * 3 + 1]),
                uint32_t(base + mesh.indices[t * 3 + 2]), int32_t(global_id), flags);

@@ -7,8 +7,9 @@
 namespace penumbra {
 
 // Rasterizes every triangle of the scene from the eye: depth (reversed-Z, infinite far plane),
-// per-tile z-min/z-max and the visible triangle of every pixel. Closed meshes are back-face
-// culled; open ones are drawn two-sided so their inside shows. Counters go to `stats`.
+// per-tile z-min/z-max and the visible triangle of every pixel. Every triangle is drawn
+// two-sided (see eye_pass.cpp for why not even closed meshes are culled). Counters go to
+// `stats`.
 EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, bool simd = true);
 
 }  // namespace penumbra

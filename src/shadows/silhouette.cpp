@@ -1,0 +1,83 @@
+#include "shadows/silhouette.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/parallel.h"
+
+namespace penumbra {
+namespace {
+
+enum class RayHit { Miss, Hit, Ambiguous };
+
+// Moller-Trumbore in double; Ambiguous when the ray passes within a hair of an edge or vertex,
+// where the parity of a crossing count cannot be trusted.
+RayHit crossRay(const dvec3& o, const dvec3& d, const dvec3& a, const dvec3& b, const dvec3& c) {
+  const dvec3 e1 = b - a, e2 = c - a;
+  const dvec3 p = glm::cross(d, e2);
+  const double det = glm::dot(e1, p);
+  if (std::fabs(det) < 1e-300) return RayHit::Miss;  // parallel to the plane
+  const double inv = 1.0 / det;
+  const dvec3 s = o - a;
+  const double u = glm::dot(s, p) * inv;
+  const dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(d, q) * inv;
+  const double t = glm::dot(e2, q) * inv;
+  constexpr double kHair = 1e-9;
+  if (u < -kHair || v < -kHair || u + v > 1 + kHair || t < -kHair) return RayHit::Miss;
+  if (u < kHair || v < kHair || u + v > 1 - kHair || t < kHair) return RayHit::Ambiguous;
+  return RayHit::Hit;
+}
+
+}  // namespace
+
+bool insideClosedMesh(const Mesh& mesh, const dvec3& point) {
+  // Directions with no special alignment to axes or to each other; the next is tried when a ray
+  // grazes an edge.
+  static const std::array<dvec3, 4> kDirections = {
+      glm::normalize(dvec3(0.5773, 0.6178, 0.5339)), glm::normalize(dvec3(-0.3129, 0.8466, -0.4306)),
+      glm::normalize(dvec3(0.7071, -0.2213, -0.6716)), glm::normalize(dvec3(-0.6109, -0.5521, 0.5673))};
+  for (const dvec3& d : kDirections) {
+    int crossings = 0;
+    bool ambiguous = false;
+    for (size_t t = 0; t < mesh.triangleCount() && !ambiguous; ++t) {
+      const RayHit h = crossRay(point, d, dvec3(mesh.vertex(t, 0)), dvec3(mesh.vertex(t, 1)),
+                                dvec3(mesh.vertex(t, 2)));
+      crossings += h == RayHit::Hit;
+      ambiguous = h == RayHit::Ambiguous;
+    }
+    if (!ambiguous) return (crossings & 1) != 0;
+  }
+  return false;  // every ray grazed an edge: the point is on the surface, call it outside
+}
+
+Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light,
+                          CasterPolicy policy) {
+  Silhouette s;
+  const size_t n = mesh.triangleCount();
+  s.orientation.resize(n);
+  const dvec3 l(light);
+  // Which facing casts: +1 light-facing only, -1 facing-away only, 0 both (two-sided).
+  int cast_only = 0;
+  if (policy == CasterPolicy::Auto && mesh.closed) cast_only = insideClosedMesh(mesh, l) ? -1 : 1;
+  // Facing in double: near-edge-on triangles must get one consistent sign for all their edges.
+  parallelFor((n + 8191) / 8192, [&](size_t chunk) {
+    const size_t end = std::min(n, (chunk + 1) * 8192);
+    for (size_t t = chunk * 8192; t < end; ++t) {
+      const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
+      const double side = glm::dot(glm::cross(b - a, c - a), l - a);
+      const int8_t facing = side > 0 ? 1 : (side < 0 ? -1 : 0);
+      s.orientation[t] = (cast_only == 0 || facing == cast_only) ? facing : 0;
+    }
+  });
+  for (const Edge& e : adjacency.edges) {
+    int32_t m = 0;
+    for (uint32_t u = e.first_use; u < e.first_use + e.use_count; ++u)
+      m += adjacency.uses[u].sign * s.orientation[adjacency.uses[u].triangle];
+    if (m != 0) s.edges.push_back({e.v0, e.v1, m});
+  }
+  return s;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,48 @@
+#pragma once
+// Runs a technique and the oracle on the same eye pass, for tests against ground truth.
+#include <filesystem>
+#include <string>
+
+#include "metrics/shadow_boundary.h"
+#include "render/eye_pass.h"
+#include "scene/scene.h"
+#include "scene/scene_file.h"
+#include "shadows/technique.h"
+
+namespace penumbra::testing {
+
+struct OracleComparison {
+  BoundaryAgreement agreement;
+  TechniqueResult technique;
+  TechniqueResult oracle;
+  EyeBuffers eye;
+};
+
+inline Image<uint8_t> coveredMask(const EyeBuffers& eye) {
+  Image<uint8_t> mask(eye.depth.width(), eye.depth.height(), 0);
+  for (size_t i = 0; i < mask.size(); ++i) mask[i] = eye.depth.depth[i] > 0.0f;
+  return mask;
+}
+
+inline OracleComparison compareHardWithOracle(const Scene& scene, const View& view,
+                                              TechniqueOptions options, size_t light_index = 0) {
+  OracleComparison c;
+  Stats eye_stats;
+  c.eye = renderEyePass(scene, view, eye_stats, options.simd);
+  const Light& light = scene.lights.at(light_index);
+  c.technique = renderShadows(options, scene, light, view, c.eye);
+  TechniqueOptions reference;
+  reference.kind = TechniqueKind::Reference;
+  reference.hard = true;
+  c.oracle = renderShadows(reference, scene, light, view, c.eye);
+  c.agreement = compareHardShadows(c.technique.visibility, c.oracle.visibility, coveredMask(c.eye));
+  return c;
+}
+
+// Path of a shared model, or empty when the models are not available (tests then skip).
+inline std::string sharedModel(const std::string& file) {
+  const std::filesystem::path p = std::filesystem::path(modelsDirectory()) / file;
+  return std::filesystem::exists(p) ? p.string() : std::string();
+}
+
+}  // namespace penumbra::testing
