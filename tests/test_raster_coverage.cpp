@@ -63,8 +63,12 @@ TEST(RasterCoverage, FanAroundInteriorPointCoversEachInteriorPixelExactlyOnce) {
           inside = std::min(inside, side * (p.x * edge.y - p.y * edge.x) / glm::length(edge));
         }
         // Snapping moves vertices by up to 1/32 pixel: only judge pixels clear of the edges.
-        if (inside > 0.1) ASSERT_EQ(c, 1) << "hole at " << x << "," << y << " seed " << seed;
-        if (inside < -0.1) ASSERT_EQ(c, 0) << "spill at " << x << "," << y << " seed " << seed;
+        if (inside > 0.1) {
+          ASSERT_EQ(c, 1) << "hole at " << x << "," << y << " seed " << seed;
+        }
+        if (inside < -0.1) {
+          ASSERT_EQ(c, 0) << "spill at " << x << "," << y << " seed " << seed;
+        }
       }
   }
 }
@@ -132,9 +136,13 @@ TEST(RasterCoverage, TopLeftRuleOnEdgesThroughPixelCentres) {
     for (int x = 0; x < width; ++x) {
       const bool inside_closed = x >= 2 && x <= 12 && y >= 2 && y <= 12;
       ASSERT_LE(count.at(x, y), 1) << x << "," << y;
-      if (!inside_closed) ASSERT_EQ(count.at(x, y), 0) << x << "," << y;
+      if (!inside_closed) {
+        ASSERT_EQ(count.at(x, y), 0) << x << "," << y;
+      }
       // Strict interior and the shared diagonals: exactly once.
-      if (x > 2 && x < 12 && y > 2 && y < 12) ASSERT_EQ(count.at(x, y), 1) << x << "," << y;
+      if (x > 2 && x < 12 && y > 2 && y < 12) {
+        ASSERT_EQ(count.at(x, y), 1) << x << "," << y;
+      }
     }
   // The outer square's own edges: top and left edges are in, bottom and right are out.
   EXPECT_EQ(count.at(5, 2), 1);   // top edge

@@ -117,7 +117,9 @@ TEST(ShadowVolumeOracle, LightInsideClosedMesh) {
   const auto c = compareHardWithOracle(scene, view, volumeOptions());
   expectMatchesOracle(c, "light inside");
   for (size_t i = 0; i < c.technique.visibility.size(); ++i)
-    if (c.eye.depth.depth[i] > 0) ASSERT_EQ(c.technique.visibility[i], 0.0f);
+    if (c.eye.depth.depth[i] > 0) {
+      ASSERT_EQ(c.technique.visibility[i], 0.0f);
+    }
 }
 
 // Casters that are not closed manifolds: an open quad seen from below and above, a fin of three

@@ -18,6 +18,11 @@ struct Stats {
   uint64_t silhouette_edges = 0;   // silhouette edges seen from the light centre
   uint64_t wedges = 0;             // penumbra wedges built
   uint64_t triangles = 0;          // triangles set up for rasterization (after clipping)
+  uint64_t rays = 0;               // oracle shadow rays (incl. ones its surface blocks untraced)
+  // Penumbra wedges: pixels whose depth point was tested against a wedge, and of those the ones
+  // truly inside it. Their ratio is the distance from perfect culling (2004 paper, section 4).
+  uint64_t penumbra_tests = 0;
+  uint64_t penumbra_inside = 0;
   // Wall-clock milliseconds per named pass, in the order the passes ran. Not deterministic.
   std::vector<std::pair<std::string, double>> time_ms;
 
@@ -31,6 +36,9 @@ struct Stats {
     silhouette_edges += o.silhouette_edges;
     wedges += o.wedges;
     triangles += o.triangles;
+    rays += o.rays;
+    penumbra_tests += o.penumbra_tests;
+    penumbra_inside += o.penumbra_inside;
   }
   // Adds counters and appends timings, for summing a technique's passes into a frame.
   void add(const Stats& o) {
@@ -41,7 +49,8 @@ struct Stats {
     return pixels_rasterized == o.pixels_rasterized && z_reads == o.z_reads &&
            stencil_writes == o.stencil_writes && tiles_tested == o.tiles_tested &&
            tiles_culled == o.tiles_culled && silhouette_edges == o.silhouette_edges &&
-           wedges == o.wedges && triangles == o.triangles;
+           wedges == o.wedges && triangles == o.triangles &&
+           penumbra_tests == o.penumbra_tests && penumbra_inside == o.penumbra_inside && rays == o.rays;
   }
   double totalMs() const {
     double t = 0;

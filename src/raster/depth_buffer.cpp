@@ -6,10 +6,48 @@
 #include "core/parallel.h"
 
 namespace penumbra {
+namespace {
+
+// `b < a ? b : a` is std::min's choice, written so the compiler turns whole rows into packed
+// min/max instructions (std::min's reference return keeps some compilers from it). Depth holds no
+// NaN, so the order of the terms cannot change a result.
+inline float minOf(float a, float b) { return b < a ? b : a; }
+inline float maxOf(float a, float b) { return a < b ? b : a; }
+
+// One output row of a 2x2 reduction: out[i] over columns 2i and 2i + 1 of rows `a` and `b`
+// (`n` entries each; an odd last column stands alone, as does an odd last row: b == a).
+template <bool kMin>
+void reducePairs(const float* a, const float* b, int n, float* out) {
+  const int pairs = n / 2;
+  for (int i = 0; i < pairs; ++i) {
+    if constexpr (kMin) {
+      out[i] = minOf(minOf(a[2 * i], b[2 * i]), minOf(a[2 * i + 1], b[2 * i + 1]));
+    } else {
+      out[i] = maxOf(maxOf(a[2 * i], b[2 * i]), maxOf(a[2 * i + 1], b[2 * i + 1]));
+    }
+  }
+  if (n & 1) out[pairs] = kMin ? minOf(a[n - 1], b[n - 1]) : maxOf(a[n - 1], b[n - 1]);
+}
+
+// Builds level `level` rows [row_begin, row_end) from the level below (or from the pixels).
+void reduceRows(const Image<float>& below_min, const Image<float>& below_max, TileDepthRange& r,
+                int row_begin, int row_end) {
+  const int n = below_min.width(), below_rows = below_min.height();
+  for (int ty = row_begin; ty < row_end; ++ty) {
+    const int y0 = 2 * ty, y1 = std::min(2 * ty + 1, below_rows - 1);
+    reducePairs<true>(below_min.row(y0), below_min.row(y1), n, r.zmin.row(ty));
+    reducePairs<false>(below_max.row(y0), below_max.row(y1), n, r.zmax.row(ty));
+  }
+}
+
+}  // namespace
 
 // Level 1 from the pixels, every further level from the one below (a min/max pyramid), each
-// level's tiles covering only pixels inside the image.
+// level's tiles covering only pixels inside the image. Bands of 2^kBandLevel pixel rows are
+// independent up to level kBandLevel, so each worker builds levels 1..kBandLevel of its band
+// while the rows are in its cache; the few rows of the levels above follow serially.
 void DepthBuffer::buildTileRanges() {
+  constexpr int kBandLevel = 6;
   const int w = depth.width(), h = depth.height();
   for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
     TileDepthRange& r = tiles[level];
@@ -18,28 +56,23 @@ void DepthBuffer::buildTileRanges() {
     const int tw = (w + size - 1) / size, th = (h + size - 1) / size;
     r.zmin.resize(tw, th);
     r.zmax.resize(tw, th);
-    const TileDepthRange* below = level > kMinTileLevel ? &tiles[level - 1] : nullptr;
-    parallelFor(size_t(th), [&](size_t row) {
-      const int ty = int(row);
-      for (int tx = 0; tx < tw; ++tx) {
-        float lo = 2.0f, hi = -1.0f;
-        if (below == nullptr) {
-          for (int y = ty * 2; y < std::min(h, ty * 2 + 2); ++y)
-            for (int x = tx * 2; x < std::min(w, tx * 2 + 2); ++x) {
-              lo = std::min(lo, depth.at(x, y));
-              hi = std::max(hi, depth.at(x, y));
-            }
-        } else {
-          for (int y = ty * 2; y < std::min(below->zmin.height(), ty * 2 + 2); ++y)
-            for (int x = tx * 2; x < std::min(below->zmin.width(), tx * 2 + 2); ++x) {
-              lo = std::min(lo, below->zmin.at(x, y));
-              hi = std::max(hi, below->zmax.at(x, y));
-            }
-        }
-        r.zmin.at(tx, ty) = lo;
-        r.zmax.at(tx, ty) = hi;
+  }
+  const int bands = (h + (1 << kBandLevel) - 1) >> kBandLevel;
+  parallelFor(size_t(bands), [&](size_t band) {
+    for (int level = kMinTileLevel; level <= kBandLevel; ++level) {
+      TileDepthRange& r = tiles[level];
+      const int row_begin = int(band << (kBandLevel - level));
+      const int row_end = std::min(r.zmin.height(), int((band + 1) << (kBandLevel - level)));
+      if (level == kMinTileLevel) {
+        reduceRows(depth, depth, r, row_begin, row_end);
+      } else {
+        reduceRows(tiles[level - 1].zmin, tiles[level - 1].zmax, r, row_begin, row_end);
       }
-    });
+    }
+  });
+  for (int level = kBandLevel + 1; level <= kMaxTileLevel; ++level) {
+    reduceRows(tiles[level - 1].zmin, tiles[level - 1].zmax, tiles[level], 0,
+               tiles[level].zmin.height());
   }
 }
 

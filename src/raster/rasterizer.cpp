@@ -7,6 +7,7 @@
 
 #include "core/parallel.h"
 #include "raster/binning.h"
+#include "raster/cull_tiles.h"
 #include "raster/fixed_point.h"
 #include "raster/tile_kernels.h"
 
@@ -39,12 +40,11 @@ void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are
   }
 }
 
-// True when no pixel of the tile can pass the triangle's depth rule (rasterizer.h,
-// StencilOptions::tile_culling). The triangle's depth over the tile is bounded by its plane at
-// the tile's corners, widened by the float error of the kernels' evaluation (tile_kernels.h)
-// so culling never changes a pixel.
-bool cullTile(const SetupTriangle& t, const TileEdges& e, float zmin, float zmax) {
-  if (zmax <= 0.0f) return true;  // only background: nothing to shadow
+}  // namespace
+
+bool depthRuleCulled(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
+                     float zmax) {
+  if (zmax <= 0.0f) return true;
   auto plane = [&](int x, int y) { return t.a * (x + 0.5) + t.b * (y + 0.5) + t.c; };
   const double c00 = plane(e.x0, e.y0), c10 = plane(e.x1, e.y0);
   const double c01 = plane(e.x0, e.y1), c11 = plane(e.x1, e.y1);
@@ -53,11 +53,9 @@ bool cullTile(const SetupTriangle& t, const TileEdges& e, float zmin, float zmax
                        1e-30;
   const double lo = std::min({c00, c10, c01, c11}) - error;
   const double hi = std::max({c00, c10, c01, c11}) + error;
-  if (t.flags & kZFail) return lo > double(zmax);  // entirely in front of every pixel
-  return hi <= double(zmin);                         // entirely behind or at every pixel
+  if (zfail) return lo > double(zmax);  // entirely in front of every pixel
+  return hi <= double(zmin);            // entirely behind or at every pixel
 }
-
-}  // namespace
 
 void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
                     Image<uint32_t>& primitive, Stats& stats, bool simd) {
@@ -92,29 +90,48 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                  width, height);
   const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
-  const TileDepthRange& ranges = depth.tileRange(kBinTileLevel);
+  const TileDepthRange& ranges = depth.tileRange(options.cull_level);
   std::vector<TileCounts> counts(bins.tileCount());
   const StencilTarget target{depth.depth.data(), stencil.data(), width};
   parallelFor(bins.tileCount(), [&](size_t tile) {
     const TileBox box = tileBox(bins, tile, width, height);
-    const float zmin = ranges.zmin[tile], zmax = ranges.zmax[tile];
     TileCounts& c = counts[tile];
     for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
-      ++c.tested;
-      if (!setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e) ||
-          (options.tile_culling && cullTile(t, e, zmin, zmax))) {
-        ++c.culled;
-        continue;
-      }
+      if (!setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
       const bool zfail = (t.flags & kZFail) != 0;
       const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
-      stencilKernel(e, contribution, zfail ? DepthRule::NotCloser : DepthRule::Closer, target,
-                    c.kernel, options.simd);
+      const DepthRule rule = zfail ? DepthRule::NotCloser : DepthRule::Closer;
+      forEachCullTile(e, ranges, [&](const TileEdges& sub, float zmin, float zmax) {
+        ++c.tested;
+        if (options.tile_culling && depthRuleCulled(t, sub, zfail, zmin, zmax)) {
+          ++c.culled;
+          return;
+        }
+        stencilKernel(sub, contribution, rule, target, c.kernel, options.simd);
+      });
     }
   });
   sumInto(counts, stats, true);
+  stats.triangles += setup.size();
+}
+
+void forEachTriangleInTiles(
+    const ClipTriangles& triangles, int width, int height,
+    const std::function<void(const TileVisit&, const SetupTriangle&, const TileEdges&)>& visit,
+    Stats& stats) {
+  const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
+  const TileBins bins = binTriangles(setup, width, height);
+  parallelFor(bins.tileCount(), [&](size_t tile) {
+    const TileBox box = tileBox(bins, tile, width, height);
+    const TileVisit v{tile, box.x0, box.y0, box.x1, box.y1};
+    for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
+      const SetupTriangle& t = setup[bins.triangles[k]];
+      TileEdges e;
+      if (setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e)) visit(v, t, e);
+    }
+  });
   stats.triangles += setup.size();
 }
 

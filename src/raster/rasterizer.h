@@ -1,10 +1,12 @@
 #pragma once
 // The two passes built on the tile kernels: depth (eye pass) and stencil (shadow volumes).
 #include <cstdint>
+#include <functional>
 
 #include "core/image.h"
 #include "core/stats.h"
 #include "raster/depth_buffer.h"
+#include "raster/tile_kernels.h"
 #include "raster/triangle_setup.h"
 
 namespace penumbra {
@@ -21,6 +23,7 @@ struct StencilOptions {
   // rule: z-pass needs the triangle in front of some pixel, z-fail behind or at some pixel.
   // Only work counters change with it, never the stencil.
   bool tile_culling = true;
+  int cull_level = 5;  // culling tiles of 2^cull_level pixels (1..8); 5 = the bin tiles
 };
 
 // Adds every triangle's contribution to the stencil where its depth rule holds. The payload is
@@ -30,5 +33,18 @@ struct StencilOptions {
 // sized like the depth and cleared by the caller.
 void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
+
+// The tile loop the passes above are built on, for passes with their own pixel kernels (penumbra
+// wedges): sets up and bins `triangles`, then for every (triangle, bin tile) pair the triangle
+// overlaps calls visit(tile_index, triangle, edges) on the worker owning that tile, in
+// triangle order within the tile. `visit` may only write pixels of its tile.
+struct TileVisit {
+  size_t tile;                    // bin tile index, row-major
+  int x0, y0, x1, y1;             // the bin tile's pixels, inclusive
+};
+void forEachTriangleInTiles(
+    const ClipTriangles& triangles, int width, int height,
+    const std::function<void(const TileVisit&, const SetupTriangle&, const TileEdges&)>& visit,
+    Stats& stats);
 
 }  // namespace penumbra

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -14,13 +15,15 @@ namespace {
 // Homogeneous clip planes, as dot(plane, clip) >= 0 inside. Near: w - z >= 0 (core/view.h);
 // guard band: |x|, |y| <= g w with g chosen so the band reaches kGuardBandPixels past the edge.
 struct ClipPlanes {
+  double gx, gy;
   std::array<dvec4, 5> planes;
 };
 
 ClipPlanes makePlanes(int width, int height) {
   const double gx = 1.0 + 2.0 * kGuardBandPixels / width;
   const double gy = 1.0 + 2.0 * kGuardBandPixels / height;
-  return {{dvec4(0, 0, -1, 1), dvec4(-1, 0, 0, gx), dvec4(1, 0, 0, gx), dvec4(0, -1, 0, gy),
+  return {gx, gy,
+          {dvec4(0, 0, -1, 1), dvec4(-1, 0, 0, gx), dvec4(1, 0, 0, gx), dvec4(0, -1, 0, gy),
            dvec4(0, 1, 0, gy)}};
 }
 
@@ -73,6 +76,64 @@ struct ScreenVertex {
   double depth;     // reversed-Z
 };
 
+// std::llround (halfway cases away from zero), inline: libm's is an out-of-line call and setup
+// snaps two coordinates per vertex. For |v| < 2^52, v - trunc(v) is exact, so comparing it with
+// +-0.5 decides exactly as llround does; anything larger (or NaN) goes to llround itself. Every
+// pass snaps through this one function, which keeps a triangle drawn twice bit-identical.
+inline int64_t roundHalfAwayFromZero(double v) {
+  if (!(std::fabs(v) < 0x1p52)) return std::llround(v);
+  int64_t i = int64_t(v);  // truncates toward zero
+  const double fraction = v - double(i);
+  if (fraction >= 0.5) {
+    ++i;
+  } else if (fraction <= -0.5) {
+    --i;
+  }
+  return i;
+}
+
+ScreenVertex toScreen(const dvec4& c, int width, int height) {
+  const double inv_w = 1.0 / c.w;
+  const double sx = (c.x * inv_w * 0.5 + 0.5) * width;
+  const double sy = (0.5 - c.y * inv_w * 0.5) * height;
+  return {roundHalfAwayFromZero(sx * kSubpixelSteps), roundHalfAwayFromZero(sy * kSubpixelSteps),
+          sx, sy, c.z * inv_w};
+}
+
+// A vertex classified once, whatever number of triangles share it. Outcode bit i: outside
+// ClipPlanes::planes[i]. kNotDrawable: inside every plane yet w <= 0 (only (0, 0, z <= 0, 0)
+// gets there), kNonFinite: a NaN or infinite coordinate. `screen` is set only for code 0.
+constexpr uint8_t kOutsideBits = 0x1f;
+constexpr uint8_t kNotDrawable = 0x40;
+constexpr uint8_t kNonFinite = 0x80;
+
+struct ClassifiedVertex {
+  ScreenVertex screen;
+  uint8_t code;
+};
+
+// The plane tests written out: for finite input they equal glm::dot(plane, c) >= 0 with the
+// planes of makePlanes, term for term (the zero terms add +-0, which changes no comparison), so
+// a triangle takes the unclipped path exactly when the clipping path would leave it whole.
+ClassifiedVertex classify(const vec4& v, const ClipPlanes& planes, int width, int height) {
+  ClassifiedVertex out;
+  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w))) {
+    out.code = kNonFinite;
+    return out;
+  }
+  const dvec4 c(v);
+  const double gw_x = planes.gx * c.w, gw_y = planes.gy * c.w;
+  uint8_t code = uint8_t(c.w - c.z < 0);
+  code |= uint8_t(gw_x - c.x < 0) << 1;
+  code |= uint8_t(gw_x + c.x < 0) << 2;
+  code |= uint8_t(gw_y - c.y < 0) << 3;
+  code |= uint8_t(gw_y + c.y < 0) << 4;
+  if (code == 0 && !(c.w > 0)) code = kNotDrawable;
+  out.code = code;
+  if (code == 0) out.screen = toScreen(c, width, height);
+  return out;
+}
+
 // Sets up one (already clipped) triangle; returns false when it covers no pixel.
 bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
               int width, int height, int32_t payload, uint8_t flags, SetupTriangle& t) {
@@ -82,6 +143,19 @@ bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex
   if (area2 == 0) return false;
   const int8_t facing = area2 < 0 ? 1 : -1;
   if ((flags & kCullBackFace) && facing < 0) return false;
+
+  // Pixel box: pixel x is a candidate when its centre 16x + 8 lies within [min, max]. Tested
+  // before the depth plane's divisions: most triangles that vanish do so here.
+  const int64_t min_x = std::min({v0.x, v1.x, v2.x}), max_x = std::max({v0.x, v1.x, v2.x});
+  const int64_t min_y = std::min({v0.y, v1.y, v2.y}), max_y = std::max({v0.y, v1.y, v2.y});
+  auto ceil_div = [](int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); };
+  auto floor_div = [](int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
+  const int64_t half = kSubpixelSteps / 2;
+  t.min_x = int32_t(std::max<int64_t>(0, ceil_div(min_x - half, kSubpixelSteps)));
+  t.min_y = int32_t(std::max<int64_t>(0, ceil_div(min_y - half, kSubpixelSteps)));
+  t.max_x = int32_t(std::min<int64_t>(width - 1, floor_div(max_x - half, kSubpixelSteps)));
+  t.max_y = int32_t(std::min<int64_t>(height - 1, floor_div(max_y - half, kSubpixelSteps)));
+  if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
 
   // Depth plane from the unsnapped vertices, in input order (see SetupTriangle::a). Snapped
   // vertices would tilt small triangles' planes by up to 1/32 pixel over their size: enough to
@@ -115,58 +189,57 @@ bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex
     t.B[i] = int32_t(B);
     t.C[i] = -(A * p.x + B * p.y) - (top_left ? 0 : 1);
   }
-
-  // Pixel box: pixel x is a candidate when its centre 16x + 8 lies within [min, max].
-  const int64_t min_x = std::min({v0.x, v1.x, v2.x}), max_x = std::max({v0.x, v1.x, v2.x});
-  const int64_t min_y = std::min({v0.y, v1.y, v2.y}), max_y = std::max({v0.y, v1.y, v2.y});
-  auto ceil_div = [](int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); };
-  auto floor_div = [](int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
-  const int64_t half = kSubpixelSteps / 2;
-  t.min_x = int32_t(std::max<int64_t>(0, ceil_div(min_x - half, kSubpixelSteps)));
-  t.min_y = int32_t(std::max<int64_t>(0, ceil_div(min_y - half, kSubpixelSteps)));
-  t.max_x = int32_t(std::min<int64_t>(width - 1, floor_div(max_x - half, kSubpixelSteps)));
-  t.max_y = int32_t(std::min<int64_t>(height - 1, floor_div(max_y - half, kSubpixelSteps)));
-  if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
   t.payload = payload;
   t.facing = facing;
   t.flags = flags;
   return true;
 }
 
-ScreenVertex toScreen(const dvec4& c, int width, int height) {
-  const double inv_w = 1.0 / c.w;
-  const double sx = (c.x * inv_w * 0.5 + 0.5) * width;
-  const double sy = (0.5 - c.y * inv_w * 0.5) * height;
-  return {std::llround(sx * kSubpixelSteps), std::llround(sy * kSubpixelSteps), sx, sy, c.z * inv_w};
+// Triangles with a vertex outside some plane: clipped in double from the original clip-space
+// vertices, then fanned from the first remaining vertex.
+void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes, int width,
+                  int height, uint8_t flags, std::vector<SetupTriangle>& out) {
+  std::array<dvec4, 8> poly;
+  for (int k = 0; k < 3; ++k) poly[k] = dvec4(tris.clip[tris.indices[t * 3 + k]]);
+  const int count = clipPolygon(poly, 3, planes);
+  if (count < 3) return;
+  std::array<ScreenVertex, 8> screen;
+  for (int k = 0; k < count; ++k) {
+    if (!(poly[k].w > 0)) return;  // only a degenerate triangle on the eye plane gets here
+    screen[k] = toScreen(poly[k], width, height);
+  }
+  for (int k = 1; k + 1 < count; ++k) {
+    SetupTriangle s;
+    if (setupOne(screen[0], screen[k], screen[k + 1], width, height, tris.payload[t], flags, s))
+      out.push_back(s);
+  }
 }
 
+// `vertex(i)` returns the ClassifiedVertex of clip vertex i, precomputed or computed on demand:
+// the result is the same either way.
+template <class VertexFn>
 void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, int height,
-                const ClipPlanes& planes, std::vector<SetupTriangle>& out) {
+                const ClipPlanes& planes, const VertexFn& vertex, std::vector<SetupTriangle>& out) {
   for (size_t t = begin; t < end; ++t) {
     const uint8_t flags = tris.flags.empty() ? 0 : tris.flags[t];
-    std::array<dvec4, 8> poly;
-    bool inside_all = true;
-    bool finite_input = true;
-    for (int k = 0; k < 3; ++k) {
-      poly[k] = dvec4(tris.clip[tris.indices[t * 3 + k]]);
-      for (int c = 0; c < 4; ++c) finite_input &= std::isfinite(poly[k][c]);
-      for (const dvec4& plane : planes.planes) inside_all &= glm::dot(plane, poly[k]) >= 0;
-    }
-    if (!finite_input) continue;  // NaN or infinite input covers nothing, and must not crash
-    const int count = inside_all ? 3 : clipPolygon(poly, 3, planes);
-    if (count < 3) continue;
-    std::array<ScreenVertex, 8> screen;
-    bool finite = true;
-    for (int k = 0; k < count; ++k) {
-      finite &= poly[k].w > 0;
-      screen[k] = toScreen(poly[k], width, height);
-    }
-    if (!finite) continue;  // only a degenerate triangle on the eye plane gets here
-    for (int k = 1; k + 1 < count; ++k) {
+    const uint32_t* idx = &tris.indices[t * 3];
+    const ClassifiedVertex& c0 = vertex(idx[0]);
+    const ClassifiedVertex& c1 = vertex(idx[1]);
+    const ClassifiedVertex& c2 = vertex(idx[2]);
+    const uint8_t any = c0.code | c1.code | c2.code;
+    if (any == 0) {
       SetupTriangle s;
-      if (setupOne(screen[0], screen[k], screen[k + 1], width, height, tris.payload[t], flags, s))
+      if (setupOne(c0.screen, c1.screen, c2.screen, width, height, tris.payload[t], flags, s))
         out.push_back(s);
+      continue;
     }
+    // NaN or infinite input covers nothing, and must not crash.
+    if (any & kNonFinite) continue;
+    // Inside every plane but on the eye plane (w = 0): nothing to draw, as with clipping.
+    if ((any & kOutsideBits) == 0) continue;
+    // All three outside one plane: so is the whole triangle (trivial reject).
+    if (c0.code & c1.code & c2.code & kOutsideBits) continue;
+    setupClipped(tris, t, planes, width, height, flags, out);
   }
 }
 
@@ -178,12 +251,36 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
   PENUMBRA_DCHECK(tris.indices.size() == tris.payload.size() * 3);
   const ClipPlanes planes = makePlanes(width, height);
   constexpr size_t kChunk = 4096;
+
+  // Classify each vertex once when vertices are shared (a mesh's vertex belongs to ~6
+  // triangles); when most vertices are unused (shadow volumes: only silhouette vertices and
+  // caps), classify the three corners of each triangle instead. Same results either way.
+  const size_t vertex_count = tris.clip.size();
+  const bool per_vertex = tris.indices.size() >= vertex_count;
+  std::unique_ptr<ClassifiedVertex[]> classified;
+  if (per_vertex) {
+    classified.reset(new ClassifiedVertex[vertex_count]);
+    parallelFor((vertex_count + kChunk - 1) / kChunk, [&](size_t c) {
+      const size_t begin = c * kChunk, end = std::min(vertex_count, begin + kChunk);
+      for (size_t i = begin; i < end; ++i)
+        classified[i] = classify(tris.clip[i], planes, width, height);
+    });
+  }
+
   const size_t chunks = (tris.size() + kChunk - 1) / kChunk;
   std::vector<std::vector<SetupTriangle>> parts(chunks);
   parallelFor(chunks, [&](size_t c) {
     const size_t begin = c * kChunk, end = std::min(tris.size(), begin + kChunk);
     parts[c].reserve(end - begin);
-    setupRange(tris, begin, end, width, height, planes, parts[c]);
+    if (per_vertex) {
+      const ClassifiedVertex* table = classified.get();
+      setupRange(tris, begin, end, width, height, planes,
+                 [table](uint32_t i) -> const ClassifiedVertex& { return table[i]; }, parts[c]);
+    } else {
+      setupRange(tris, begin, end, width, height, planes,
+                 [&](uint32_t i) { return classify(tris.clip[i], planes, width, height); },
+                 parts[c]);
+    }
   });
   size_t total = 0;
   for (const auto& p : parts) total += p.size();

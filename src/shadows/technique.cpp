@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "shadows/reference/reference.h"
 #include "shadows/volume/shadow_volume.h"
+#include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
 
@@ -16,6 +17,10 @@ TechniqueResult renderShadows(const TechniqueOptions& options, const Scene& scen
       return renderReference(options, scene, light, view, eye);
     case TechniqueKind::ShadowVolume:
       return renderShadowVolume(options, scene, light, view, eye);
+    case TechniqueKind::Wedge2002:
+    case TechniqueKind::WedgeThreePass:
+    case TechniqueKind::WedgeSinglePass:
+      return renderWedges(options, scene, light, view, eye);
   }
   throw Error("unknown technique");
 }
@@ -28,6 +33,9 @@ struct NamedKind {
 constexpr NamedKind kNames[] = {
     {"reference", TechniqueKind::Reference},
     {"volume", TechniqueKind::ShadowVolume},
+    {"wedge-2002", TechniqueKind::Wedge2002},
+    {"wedge-3pass", TechniqueKind::WedgeThreePass},
+    {"wedge-1pass", TechniqueKind::WedgeSinglePass},
 };
 }  // namespace
 
@@ -43,6 +51,21 @@ TechniqueKind parseTechniqueName(const std::string& name) {
   std::string known;
   for (const auto& n : kNames) known += std::string(known.empty() ? "" : ", ") + n.name;
   throw Error(fmt::format("unknown technique '{}' (known: {})", name, known));
+}
+
+std::string cullModeName(CullMode mode) {
+  switch (mode) {
+    case CullMode::None: return "none";
+    case CullMode::ZMax: return "zmax";
+    case CullMode::Full: return "full";
+  }
+  return "unknown";
+}
+
+CullMode parseCullMode(const std::string& name) {
+  for (CullMode m : {CullMode::None, CullMode::ZMax, CullMode::Full})
+    if (cullModeName(m) == name) return m;
+  throw Error(fmt::format("unknown culling mode '{}' (known: none, zmax, full)", name));
 }
 
 std::vector<std::string> techniqueNames() {

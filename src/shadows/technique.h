@@ -17,6 +17,18 @@ namespace penumbra {
 enum class TechniqueKind {
   Reference,      // ray-traced oracle (Embree): hard = one ray to the centre, soft = N rays
   ShadowVolume,   // hard shadow volumes, z-pass / z-fail, integer stencil
+  Wedge2002,      // penumbra wedges as in the 2002 paper: entry/exit points per fragment
+  WedgeThreePass, // 2004 restructured algorithm, three-pass implementation (section 6.1)
+  WedgeSinglePass,// 2004 restructured algorithm, single-pass implementation (section 6.2)
+};
+
+// Tile z-min/z-max occlusion culling of the wedge passes (2004 paper, section 4).
+enum class CullMode {
+  None,  // every covered pixel reads its depth
+  ZMax,  // only the test that common hardware has: skip tiles whose farthest depth is nearer
+         // than the primitive (for the penumbra: than the whole wedge)
+  Full,  // z-min and z-max: also skip tiles entirely in front of the wedge, and tiles whose
+         // screen-space box lies outside a wedge plane (n- and p-vertex tests, Figure 7)
 };
 
 // How shadow volumes count: from the eye (z-pass, Heidmann) or from infinity (z-fail,
@@ -32,6 +44,12 @@ struct TechniqueOptions {
   bool hard = false;
   uint64_t seed = 1;
   bool simd = true;           // false: run every hot loop's scalar twin
+  // Penumbra wedges.
+  CullMode cull = CullMode::Full;
+  int tile_level = 3;           // culling tiles of 2^tile_level pixels, 1..8 (3: 8 x 8)
+  bool smooth_falloff = false;  // s' = 3 s^2 - 2 s^3 (2002 paper, section 4.2)
+  bool acute_wedges = false;    // extra wedges around acute silhouette vertices (Figure 7)
+  int light_count = 1;          // LI units per light are 255 / light_count (2002 paper, section 7)
   bool show_progress = false; // progress bar on a terminal for long work
 };
 
@@ -43,9 +61,12 @@ struct TechniqueResult {
 TechniqueResult renderShadows(const TechniqueOptions& options, const Scene& scene,
                               const Light& light, const View& view, const EyeBuffers& eye);
 
-// Name <-> kind, for the CLI and stats files ("reference", "volume").
+// Name <-> kind, for the CLI and stats files ("reference", "volume", "wedge-2002",
+// "wedge-3pass", "wedge-1pass").
 std::string techniqueName(TechniqueKind kind);
 TechniqueKind parseTechniqueName(const std::string& name);  // throws penumbra::Error
 std::vector<std::string> techniqueNames();
+std::string cullModeName(CullMode mode);
+CullMode parseCullMode(const std::string& name);  // "none", "zmax", "full"; throws
 
 }  // namespace penumbra

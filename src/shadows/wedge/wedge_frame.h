@@ -1,0 +1,51 @@
+#pragma once
+// Everything the wedge passes draw for one light, in clip space: the umbra volume (front-plane
+// quads of every unit silhouette edge, plus caps and skirts with z-fail) and the faces of every
+// wedge polyhedron, each triangle tagged with what it contributes (WedgeRole).
+#include <cstdint>
+#include <vector>
+
+#include "core/view.h"
+#include "raster/triangle_setup.h"
+#include "scene/scene.h"
+#include "shadows/technique.h"
+#include "shadows/wedge/wedge.h"
+#include "shadows/wedge/wedge_screen.h"
+
+namespace penumbra {
+
+inline constexpr int32_t kNoWedge = -1;
+
+struct WedgeRole {
+  // Umbra: signed weight of a polygon facing out of the umbra volume (as shadow-volume
+  // polygons: rasterizer.h), 0 when the triangle is not part of the umbra volume.
+  int32_t umbra_weight = 0;
+  // Penumbra: the wedge this triangle bounds, or kNoWedge; face_sign is +1 when the triangle
+  // is wound to face out of that wedge, -1 when it is wound inward (an umbra quad with a
+  // negative weight), so that "front-facing face of the wedge" is facing * face_sign > 0.
+  int32_t wedge = kNoWedge;
+  int8_t face_sign = 1;
+  int8_t face = -1;     // which face of the wedge: a WedgeFace value, or -1
+  bool zfail = false;   // the caster's volume is counted from infinity (z-fail)
+};
+
+// Faces of a wedge polyhedron; kFar is the face at infinity of an unbounded wedge or the
+// bottom of a finite one (2002 paper, Figure 6).
+enum WedgeFace : int8_t { kFront = 0, kBack = 1, kLeft = 2, kRight = 3, kFar = 4 };
+
+struct WedgeFrame {
+  ClipTriangles triangles;         // payload: index into roles
+  std::vector<WedgeRole> roles;
+  std::vector<Wedge> wedges;       // all meshes' wedges; WedgeRole::wedge indexes these
+  std::vector<ScreenWedge> screen; // same order
+  uint64_t silhouette_edges = 0;
+  uint64_t junction_vertices = 0;
+};
+
+// Builds the frame for `light`. With a zero radius there are no wedge faces and the umbra
+// volume is the hard shadow volume exactly (same clip vertices, same triangles), so every wedge
+// variant then gives the hard-shadow image.
+WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
+                           const Light& light, const View& view);
+
+}  // namespace penumbra

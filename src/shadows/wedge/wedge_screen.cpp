@@ -1,0 +1,75 @@
+#include "shadows/wedge/wedge_screen.h"
+
+#include <algorithm>
+
+namespace penumbra {
+
+ScreenPlane toScreenPlane(const Plane& world, const View& view) {
+  // World plane value = (n, d) . X = (n, d) . M^-1 clip = q . clip with q = M^-T (n, d), and
+  // clip = w (ndc_x, ndc_y, z, 1) for a finite point (core/view.h). Dividing by w and writing
+  // ndc in pixels: ndc_x = 2 sx / W - 1, ndc_y = 1 - 2 sy / H.
+  const dmat4 m(view.view_projection);
+  const dvec4 q = glm::transpose(glm::inverse(m)) * dvec4(world.n, world.d);
+  ScreenPlane p;
+  p.a = float(2.0 * q.x / view.width);
+  p.b = float(-2.0 * q.y / view.height);
+  p.c = float(q.z);
+  p.d = float(q.w - q.x + q.y);
+  return p;
+}
+
+namespace {
+
+// Depth of a homogeneous world point (w = 1 point, w = 0 direction); returns false when the
+// point is behind the near plane (then the wedge may cover depths up to 1).
+bool depthOf(const View& view, const dvec4& p, float& depth) {
+  const dvec4 clip = dmat4(view.view_projection) * p;
+  if (!(clip.w - clip.z > 0.0)) return false;
+  depth = float(clip.z / clip.w);
+  return true;
+}
+
+}  // namespace
+
+ScreenWedge toScreenWedge(const Wedge& wedge, const View& view, bool smooth) {
+  ScreenWedge s;
+  s.front = toScreenPlane(wedge.front, view);
+  s.back = toScreenPlane(wedge.back, view);
+  s.left = toScreenPlane(wedge.left, view);
+  s.right = toScreenPlane(wedge.right, view);
+  if (wedge.finite) s.bottom = toScreenPlane(wedge.bottom, view);
+  const WedgeIntensityConstants k = wedgeIntensityConstants(wedge);
+  s.k = {float(k.front_left), float(k.back_left), float(k.front_right), float(k.back_right),
+         float(k.left), float(k.right)};
+  s.smooth = smooth;
+  // Depth range over the wedge's vertices: the edge, then the far corners or the directions.
+  float z_near = 0.0f, z_far = 1.0f;
+  bool all_in_front = true;
+  auto add = [&](const dvec4& p) {
+    float z;
+    if (!depthOf(view, p, z)) {
+      all_in_front = false;
+      return;
+    }
+    z_near = std::max(z_near, z);
+    z_far = std::min(z_far, z);
+  };
+  add(dvec4(wedge.a, 1.0));
+  add(dvec4(wedge.b, 1.0));
+  if (wedge.finite) {
+    for (const dvec3& c : {wedge.far_front_left, wedge.far_front_right, wedge.far_back_left,
+                           wedge.far_back_right})
+      add(dvec4(c, 1.0));
+  } else {
+    for (const dvec3& d : {wedge.ray_front_left, wedge.ray_front_right, wedge.ray_back_left,
+                           wedge.ray_back_right})
+      add(dvec4(d, 0.0));
+    z_far = 0.0f;
+  }
+  // The float depth buffer and the plane evaluation round: widen the range by a few ulps.
+  s.z_near = all_in_front ? z_near * (1.0f + 1e-5f) : 2.0f;
+  s.z_far = all_in_front ? z_far * (1.0f - 1e-5f) : 0.0f;
+  return s;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,236 @@
+// Penumbra wedge soft shadows: the 2002 algorithm and the 2004 restructured algorithm in its
+// three-pass and single-pass implementations (2004 paper, sections 3-6).
+//
+// Restructured (section 3): rasterizeUmbra(front planes, -255) with the depth test, then
+// rasterizePenumbra(front-facing wedge faces): for each pixel, if the depth-buffer point is
+// inside the wedge, add round(255 s). Back planes are never drawn for the umbra. With z-fail
+// (section 5) the umbra volume is closed by caps and counted from infinity, and the penumbra
+// footprint is walked through the back-facing faces instead, which also covers the eye being
+// inside a wedge (no face of it is then front-facing).
+//   three-pass (6.1): umbra into a stencil, stencil x 255 into an LI buffer cleared to 255,
+//     then the penumbra pass.
+//   single-pass (6.2): one walk over all triangles; a front plane that is also a penumbra face
+//     does both parts with one depth read and one LI write; its umbra part is culled with the
+//     z-max test only (z-min with z-fail), its penumbra part with the full test.
+#include "shadows/wedge/wedge_technique.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/parallel.h"
+#include "core/timer.h"
+#include "raster/cull_tiles.h"
+#include "raster/rasterizer.h"
+#include "shadows/wedge/li_buffer.h"
+#include "shadows/wedge/wedge2002_kernel.h"
+#include "shadows/wedge/wedge_culling.h"
+#include "shadows/wedge/wedge_frame.h"
+#include "shadows/wedge/wedge_kernel.h"
+
+namespace penumbra {
+namespace {
+
+struct TileWork {
+  WedgeKernelCounts umbra, penumbra;
+  uint64_t tested = 0, culled = 0;
+};
+
+void addTileWork(const std::vector<TileWork>& tiles, Stats& stats) {
+  for (const TileWork& t : tiles) {
+    stats.pixels_rasterized += t.umbra.covered + t.penumbra.covered;
+    stats.z_reads += t.umbra.covered + t.penumbra.covered;
+    stats.stencil_writes += t.umbra.writes + t.penumbra.writes;
+    stats.penumbra_tests += t.penumbra.covered;
+    stats.penumbra_inside += t.penumbra.inside;
+    stats.tiles_tested += t.tested;
+    stats.tiles_culled += t.culled;
+  }
+}
+
+// Whether a wedge face takes part in the penumbra walk: front-facing with z-pass, back-facing
+// with z-fail (section 5).
+bool penumbraFace(const WedgeRole& role, const SetupTriangle& t) {
+  if (role.wedge == kNoWedge) return false;
+  const int facing = t.facing * role.face_sign;
+  return role.zfail ? facing < 0 : facing > 0;
+}
+
+int32_t umbraValue(const WedgeRole& role, const SetupTriangle& t, int full) {
+  // As rasterizeStencil: +w for polygons facing the eye with z-pass, negated with z-fail; each
+  // counted volume takes `full` off the LI buffer.
+  return -full * role.umbra_weight * t.facing * (role.zfail ? -1 : 1);
+}
+
+// Three-pass, pass 1 and 2: the umbra volume into a stencil buffer, then LI = full - full * s.
+// The stencil is read as 8 bits wrapping around, as the papers' hardware stencil.
+void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& options,
+                         const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
+  ClipTriangles umbra;
+  umbra.clip = frame.triangles.clip;
+  for (size_t i = 0; i < frame.roles.size(); ++i) {
+    const WedgeRole& role = frame.roles[i];
+    if (role.umbra_weight == 0) continue;
+    umbra.add(frame.triangles.indices[i * 3], frame.triangles.indices[i * 3 + 1],
+              frame.triangles.indices[i * 3 + 2], role.umbra_weight, role.zfail ? kZFail : 0);
+  }
+  Image<int32_t> stencil(li.width(), li.height(), 0);
+  StencilOptions so;
+  so.simd = options.simd;
+  so.tile_culling = options.cull != CullMode::None;
+  so.cull_level = options.tile_level;
+  rasterizeStencil(umbra, eye.depth, stencil, stats, so);
+  parallelFor(size_t(li.height()), [&](size_t y) {
+    for (int x = 0; x < li.width(); ++x)
+      li.at(x, int(y)) = liAdd(int16_t(full), -full * int32_t(int8_t(stencil.at(x, int(y)))));
+  });
+}
+
+void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
+                  const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
+  const int width = li.width(), height = li.height();
+  const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
+  const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
+  std::vector<TileWork> work((size_t(width) + 31) / 32 * ((size_t(height) + 31) / 32));
+  forEachTriangleInTiles(
+      frame.triangles, width, height,
+      [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
+        const WedgeRole& role = frame.roles[size_t(t.payload)];
+        if (!penumbraFace(role, t)) return;
+        const ScreenWedge& wedge = frame.screen[size_t(role.wedge)];
+        TileWork& tw = work[v.tile];
+        forEachCullTile(e, ranges, [&](const TileEdges& sub, float zmin, float zmax) {
+          ++tw.tested;
+          if (penumbraCulled(options.cull, wedge, sub, zmin, zmax)) {
+            ++tw.culled;
+            return;
+          }
+          WedgeKernelWork k;
+          k.wedge = &wedge;
+          k.li_scale = float(full);
+          wedgeKernel(sub, k, target, tw.penumbra, options.simd);
+        });
+      },
+      stats);
+  addTileWork(work, stats);
+}
+
+void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const EyeBuffers& eye,
+                int full, LiBuffer& li, Stats& stats) {
+  const int width = li.width(), height = li.height();
+  const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
+  const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
+  std::vector<TileWork> work((size_t(width) + 31) / 32 * ((size_t(height) + 31) / 32));
+  forEachTriangleInTiles(
+      frame.triangles, width, height,
+      [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
+        const WedgeRole& role = frame.roles[size_t(t.payload)];
+        const bool has_penumbra = penumbraFace(role, t);
+        if (role.umbra_weight == 0 && !has_penumbra) return;
+        const ScreenWedge* wedge = has_penumbra ? &frame.screen[size_t(role.wedge)] : nullptr;
+        TileWork& tw = work[v.tile];
+        forEachCullTile(e, ranges, [&](const TileEdges& sub, float zmin, float zmax) {
+          ++tw.tested;
+          WedgeKernelWork k;
+          k.li_scale = float(full);
+          if (role.umbra_weight != 0 &&
+              !(options.cull != CullMode::None && depthRuleCulled(t, sub, role.zfail, zmin, zmax))) {
+            k.umbra_value = umbraValue(role, t, full);
+            k.rule = role.zfail ? DepthRule::NotCloser : DepthRule::Closer;
+          }
+          if (wedge != nullptr && !penumbraCulled(options.cull, *wedge, sub, zmin, zmax))
+            k.wedge = wedge;
+          if (k.umbra_value == 0 && k.wedge == nullptr) {
+            ++tw.culled;
+            return;
+          }
+          // One depth read per pixel for both parts: count it under the penumbra when that
+          // part runs, else under the umbra.
+          wedgeKernel(sub, k, target, k.wedge != nullptr ? tw.penumbra : tw.umbra, options.simd);
+        });
+      },
+      stats);
+  addTileWork(work, stats);
+}
+
+void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
+                  const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
+  const int width = li.width(), height = li.height();
+  const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
+  std::vector<TileWork> work((size_t(width) + 31) / 32 * ((size_t(height) + 31) / 32));
+  forEachTriangleInTiles(
+      frame.triangles, width, height,
+      [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
+        const WedgeRole& role = frame.roles[size_t(t.payload)];
+        TileWork& tw = work[v.tile];
+        ++tw.tested;
+        if (role.wedge == kNoWedge) {
+          // A volume quad without a wedge (zero radius, or a nearly parallel edge): a wedge of
+          // zero thickness, entered and left at once: -255 in front, +255 behind (z-pass).
+          if (role.umbra_weight == 0) return;
+          WedgeKernelWork k;
+          k.umbra_value = umbraValue(role, t, full);
+          k.rule = DepthRule::Closer;
+          wedgeKernel(e, k, target, tw.umbra, options.simd);
+          return;
+        }
+        if (t.facing * role.face_sign <= 0) return;  // only front-facing wedge faces
+        wedge2002Kernel(e, frame.screen[size_t(role.wedge)], role.face, float(full), target,
+                        tw.penumbra);
+      },
+      stats);
+  addTileWork(work, stats);
+}
+
+}  // namespace
+
+TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene,
+                             const Light& light, const View& view, const EyeBuffers& eye) {
+  PENUMBRA_CHECK(options.tile_level >= kMinTileLevel && options.tile_level <= kMaxTileLevel,
+                 "tile size 2^{} is outside 2^{}..2^{}", options.tile_level, kMinTileLevel,
+                 kMaxTileLevel);
+  PENUMBRA_CHECK(options.light_count >= 1 && options.light_count <= 255,
+                 "light count {} is outside 1..255", options.light_count);
+  TechniqueResult result;
+  Stats& stats = result.stats;
+  // 255 per light, 255 / n with n lights sharing one buffer (2002 paper, section 7).
+  const int full = kLiFull / options.light_count;
+  WedgeFrame frame;
+  {
+    PassTimer timer(stats, "wedges");
+    frame = buildWedgeFrame(options, scene, light, view);
+    stats.silhouette_edges += frame.silhouette_edges;
+    stats.wedges += frame.wedges.size();
+  }
+  LiBuffer li(view.width, view.height, int16_t(full));
+  switch (options.kind) {
+    case TechniqueKind::WedgeThreePass: {
+      {
+        PassTimer timer(stats, "umbra");
+        umbraThroughStencil(frame, options, eye, full, li, stats);
+      }
+      PassTimer timer(stats, "penumbra");
+      penumbraPass(frame, options, eye, full, li, stats);
+      break;
+    }
+    case TechniqueKind::WedgeSinglePass: {
+      PassTimer timer(stats, "single-pass");
+      singlePass(frame, options, eye, full, li, stats);
+      break;
+    }
+    case TechniqueKind::Wedge2002: {
+      PassTimer timer(stats, "wedge-2002");
+      original2002(frame, options, eye, full, li, stats);
+      break;
+    }
+    default:
+      throw Error("renderWedges: not a wedge technique");
+  }
+  {
+    PassTimer timer(stats, "resolve");
+    result.visibility = liToVisibility(li, eye.depth.depth, full);
+  }
+  return result;
+}
+
+}  // namespace penumbra
