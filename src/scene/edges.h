@@ -33,7 +33,9 @@ struct EdgeAdjacency {
 };
 
 // Builds the adjacency of `mesh` (degenerate triangles, with a repeated index, are skipped) and
-// sets mesh.closed.
+// sets mesh.closed (false for a mesh without triangles). Edges come sorted by (v0, v1) and each
+// edge's uses by triangle, so the result is deterministic. Linear time (a counting sort by v0).
+// Throws penumbra::Error for an index out of range.
 EdgeAdjacency buildEdges(Mesh& mesh);
 
 }  // namespace penumbra

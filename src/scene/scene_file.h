@@ -1,5 +1,5 @@
 #pragma once
-// The JSON scene format (documented in README.md, "Scene format").
+// The JSON scene format, documented in docs/scene-format.md.
 #include <string>
 
 #include "scene/scene.h"

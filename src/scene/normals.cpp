@@ -1,0 +1,78 @@
+#include "scene/normals.h"
+
+#include <cmath>
+#include <vector>
+
+namespace penumbra {
+
+namespace {
+
+// Above this many triangles around one vertex, the per-corner grouping (quadratic in the
+// valence) gives way to the simpler rule: the vertex average where the face is within the
+// crease angle of it, else the face normal. Only fans with hundreds of triangles hit it.
+constexpr uint32_t kMaxGroupedValence = 256;
+
+}  // namespace
+
+void computeCornerNormals(Mesh& mesh, float crease_degrees) {
+  const size_t triangle_count = mesh.triangleCount();
+  const size_t vertex_count = mesh.positions.size();
+  const float cos_crease = std::cos(glm::radians(crease_degrees));
+
+  // Area-weighted face normals: the cross product's length is twice the triangle's area.
+  std::vector<vec3> weighted(triangle_count);
+  std::vector<vec3> unit(triangle_count, vec3(0.0f));
+  for (size_t t = 0; t < triangle_count; ++t) {
+    const vec3 a = mesh.vertex(t, 0), b = mesh.vertex(t, 1), c = mesh.vertex(t, 2);
+    weighted[t] = glm::cross(b - a, c - a);
+    const float length = glm::length(weighted[t]);
+    if (length > 0.0f && std::isfinite(length)) unit[t] = weighted[t] / length;
+  }
+
+  // Triangles around each vertex (CSR).
+  std::vector<uint32_t> start(vertex_count + 1, 0);
+  for (uint32_t v : mesh.indices) ++start[v + 1];
+  for (size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> around(mesh.indices.size());
+  {
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < mesh.indices.size(); ++i) around[fill[mesh.indices[i]]++] = uint32_t(i / 3);
+  }
+
+  std::vector<vec3> vertex_average(vertex_count, vec3(0.0f));
+  for (size_t v = 0; v < vertex_count; ++v) {
+    vec3 sum(0.0f);
+    for (uint32_t i = start[v]; i < start[v + 1]; ++i) sum += weighted[around[i]];
+    const float length = glm::length(sum);
+    if (length > 0.0f && std::isfinite(length)) vertex_average[v] = sum / length;
+  }
+
+  mesh.corner_normals.assign(mesh.indices.size(), vec3(0.0f, 1.0f, 0.0f));
+  for (size_t t = 0; t < triangle_count; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = mesh.indices[3 * t + size_t(k)];
+      vec3& out = mesh.corner_normals[3 * t + size_t(k)];
+      const vec3& face = unit[t];
+      if (face == vec3(0.0f)) {
+        // Zero-area triangle: it covers no pixel, but give it its neighbours' normal.
+        if (vertex_average[v] != vec3(0.0f)) out = vertex_average[v];
+        continue;
+      }
+      if (start[v + 1] - start[v] > kMaxGroupedValence) {
+        out = glm::dot(face, vertex_average[v]) >= cos_crease ? vertex_average[v] : face;
+        continue;
+      }
+      // Smooth over the faces around v that bend less than the crease angle from this face, so
+      // a cube corner stays faceted while a cylinder's side stays smooth up to its cap.
+      vec3 sum(0.0f);
+      for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+        const uint32_t f = around[i];
+        if (glm::dot(unit[f], face) >= cos_crease) sum += weighted[f];
+      }
+      const float length = glm::length(sum);
+      out = length > 0.0f && std::isfinite(length) ? sum / length : face;
+    }
+  }
+}
+
+}  // namespace penumbra

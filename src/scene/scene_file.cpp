@@ -1,0 +1,159 @@
+#include "scene/scene_file.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+#include "scene/scene_builder.h"
+#include "scene/scene_file_impl.h"
+
+namespace penumbra {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+void checkNonNegative(const JsonReader& reader, const vec3& v, const std::string& path) {
+  if (v.x < 0.0f || v.y < 0.0f || v.z < 0.0f) reader.fail(path, "components must be >= 0");
+}
+
+void readMaterials(const JsonReader& reader, const Json& value, Scene& scene) {
+  reader.expectArray(value, "materials");
+  std::set<std::string> names;
+  for (size_t i = 0; i < value.size(); ++i) {
+    const std::string path = JsonReader::element("materials", i);
+    const Json& entry = value[i];
+    reader.expectObject(entry, path, {"name", "albedo", "specular", "shininess"});
+    Material m;
+    m.name = entry.contains("name") ? reader.string(entry["name"], JsonReader::child(path, "name"))
+                                    : "material" + std::to_string(i);
+    if (!names.insert(m.name).second) {
+      reader.fail(JsonReader::child(path, "name"), fmt::format("material '{}' is defined twice", m.name));
+    }
+    m.albedo = reader.vector3(entry, path, "albedo", m.albedo);
+    checkNonNegative(reader, m.albedo, JsonReader::child(path, "albedo"));
+    m.specular = reader.vector3(entry, path, "specular", m.specular);
+    checkNonNegative(reader, m.specular, JsonReader::child(path, "specular"));
+    m.shininess = reader.number(entry, path, "shininess", m.shininess);
+    if (m.shininess < 0.0f) reader.fail(JsonReader::child(path, "shininess"), "must be >= 0");
+    scene.materials.push_back(m);
+  }
+}
+
+void readLights(const JsonReader& reader, const Json& value, Scene& scene) {
+  reader.expectArray(value, "lights");
+  if (value.empty()) reader.fail("lights", "needs at least one light");
+  for (size_t i = 0; i < value.size(); ++i) {
+    const std::string path = JsonReader::element("lights", i);
+    const Json& entry = value[i];
+    reader.expectObject(entry, path, {"center", "radius", "color", "intensity"});
+    Light light;
+    light.center = reader.vector3(reader.required(entry, path, "center"), JsonReader::child(path, "center"));
+    light.radius = reader.number(entry, path, "radius", 0.0f);
+    if (light.radius < 0.0f) {
+      reader.fail(JsonReader::child(path, "radius"), fmt::format("must be >= 0 (got {})", light.radius));
+    }
+    light.color = reader.vector3(entry, path, "color", light.color);
+    checkNonNegative(reader, light.color, JsonReader::child(path, "color"));
+    light.intensity = reader.number(entry, path, "intensity", light.intensity);
+    if (light.intensity < 0.0f) {
+      reader.fail(JsonReader::child(path, "intensity"),
+                  fmt::format("must be >= 0 (got {})", light.intensity));
+    }
+    scene.lights.push_back(light);
+  }
+}
+
+void readSettings(const JsonReader& reader, const Json& value, RenderSettings& settings) {
+  reader.expectObject(value, "settings", {"width", "height", "ambient", "background"});
+  for (const char* key : {"width", "height"}) {
+    int& size = key[0] == 'w' ? settings.width : settings.height;
+    size = reader.integer(value, "settings", key, size);
+    if (size < 1 || size > 8192) {
+      reader.fail(JsonReader::child("settings", key), fmt::format("must be in 1..8192 (got {})", size));
+    }
+  }
+  settings.ambient = reader.vector3(value, "settings", "ambient", settings.ambient);
+  checkNonNegative(reader, settings.ambient, "settings.ambient");
+  settings.background = reader.vector3(value, "settings", "background", settings.background);
+  checkNonNegative(reader, settings.background, "settings.background");
+}
+
+void readCamera(const JsonReader& reader, const Json& value, Camera& camera) {
+  reader.expectObject(value, "camera", {"position", "target", "up", "fov", "near"});
+  camera.position = reader.vector3(reader.required(value, "camera", "position"), "camera.position");
+  camera.target = reader.vector3(reader.required(value, "camera", "target"), "camera.target");
+  camera.up = reader.vector3(value, "camera", "up", camera.up);
+  camera.fov_y = reader.number(value, "camera", "fov", camera.fov_y);
+  if (camera.fov_y <= 0.0f || camera.fov_y >= 180.0f) {
+    reader.fail("camera.fov", fmt::format("must be in (0, 180) degrees (got {})", camera.fov_y));
+  }
+  camera.near_plane = reader.number(value, "camera", "near", camera.near_plane);
+  if (camera.near_plane <= 0.0f) {
+    reader.fail("camera.near", fmt::format("must be > 0 (got {})", camera.near_plane));
+  }
+}
+
+}  // namespace
+
+std::string modelsDirectory() {
+  if (const char* env = std::getenv("PENUMBRA_MODELS"); env != nullptr && *env != '\0') return env;
+  return fs::path(PENUMBRA_DEFAULT_MODELS_DIR).lexically_normal().string();
+}
+
+Scene loadSceneFile(const std::string& path) {
+  std::error_code ec;
+  PENUMBRA_CHECK(fs::exists(path, ec), "{}: scene file not found", path);
+  std::ifstream in(path, std::ios::binary);
+  PENUMBRA_CHECK(in.good() && fs::is_regular_file(path, ec), "{}: cannot read the scene file", path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  Scene scene = parseSceneJson(text.str(), path, fs::path(path).parent_path().string());
+  return scene;
+}
+
+Scene parseSceneJson(const std::string& text, const std::string& origin,
+                     const std::string& base_dir) {
+  const JsonReader reader(origin);
+  const Json root = reader.parse(text);
+  if (!root.is_object()) reader.fail("", "the scene must be a JSON object");
+  reader.expectObject(root, "",
+                      {"name", "description", "camera", "lights", "materials", "meshes", "settings"});
+
+  Scene scene;
+  scene.name = root.contains("name") ? reader.string(root["name"], "name")
+                                     : fs::path(origin).stem().string();
+  if (root.contains("description")) (void)reader.string(root["description"], "description");
+  if (const Json* materials = JsonReader::find(root, "materials")) {
+    readMaterials(reader, *materials, scene);
+  }
+  if (scene.materials.empty()) scene.materials.push_back(Material{});
+
+  const Json& meshes = reader.required(root, "", "meshes");
+  reader.expectArray(meshes, "meshes");
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    readMeshEntry(reader, meshes[i], JsonReader::element("meshes", i), base_dir, scene);
+  }
+  readLights(reader, reader.required(root, "", "lights"), scene);
+  if (const Json* settings = JsonReader::find(root, "settings")) {
+    readSettings(reader, *settings, scene.settings);
+  }
+  if (const Json* camera = JsonReader::find(root, "camera")) {
+    readCamera(reader, *camera, scene.camera);
+  } else if (scene.triangleCount() > 0) {
+    // No camera: look at everything from the front, a little to the right and above.
+    scene.camera = frameBounds(scene.bounds(), vec3(0.5f, 0.45f, 1.0f), scene.settings.width,
+                               scene.settings.height);
+  }
+  try {
+    scene.finalize();
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", origin, e.what()));
+  }
+  return scene;
+}
+
+}  // namespace penumbra
