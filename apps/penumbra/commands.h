@@ -1,0 +1,20 @@
+#pragma once
+// The subcommands of the `penumbra` CLI. Each registers its options on the parser and runs
+// after parsing; behaviour lives in the library (DESIGN.md style rule 8), these only parse and
+// print. Errors are thrown (penumbra::Error and friends) and reported by main().
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace penumbra::cli {
+
+struct Subcommand {
+  CLI::App* parser = nullptr;
+  std::function<int()> run;  // called when `parser` was parsed; returns the exit code
+};
+
+Subcommand addRenderCommand(CLI::App& app);
+Subcommand addCompareCommand(CLI::App& app);
+Subcommand addScenesCommand(CLI::App& app);
+
+}  // namespace penumbra::cli

@@ -1,0 +1,36 @@
+#pragma once
+// What a frame did, for files and for people: the per-frame stats JSON (DESIGN.md, "The
+// technique contract": every counter and the time of every pass) and a one-line summary.
+#include <string>
+
+#include "render/frame.h"
+#include "shadows/technique.h"
+
+namespace penumbra {
+
+struct MachineInfo {
+  std::string cpu_model;  // /proc/cpuinfo "model name", else "unknown"
+  int cores = 0;          // hardware threads
+};
+MachineInfo machineInfo();
+
+// "auto", "zpass", "zfail" and back (throws penumbra::Error naming the known modes).
+std::string volumeModeName(VolumeMode mode);
+VolumeMode parseVolumeMode(const std::string& name);
+// "volume (auto)", "reference (256 rays)", "reference (hard)".
+std::string describeTechnique(const TechniqueOptions& options);
+
+// JSON text: scene, image size, technique and its options, threads, SIMD, machine, the eye
+// pass's stats, per light its stats and mean visibility, and the totals. Stats objects hold
+// every counter of core/stats.h under its own name and "time_ms": [{"pass", "ms"}...] in the
+// order the passes ran, plus "total_ms".
+std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
+                           const FrameResult& result);
+void writeStatsJson(const std::string& path, const Scene& scene, const FrameOptions& options,
+                    const FrameResult& result);
+
+// One line for the terminal: size, triangles, technique, milliseconds per pass, counters.
+std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,
+                             const FrameResult& result);
+
+}  // namespace penumbra
