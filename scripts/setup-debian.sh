@@ -11,6 +11,7 @@ packages=(
   libtbb-dev libhwy-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib
+  libegl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
 )
 
 missing=()

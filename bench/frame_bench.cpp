@@ -1,0 +1,198 @@
+// Whole frames and single techniques.
+//
+// HardShadowFrame/<scene>/<size>: renderFrame with shadow volumes (VolumeMode::Auto): eye pass,
+// silhouettes and volumes per light, stencil resolve, shading. This is the frame the llvmpipe
+// peer (bench/peer/) renders with GL z-fail stencil volumes; bench/run_benchmarks.sh quotes the
+// ratio of the two fps.
+//
+// Technique/columns/640x427/<technique>: renderShadows alone for every light, on an eye pass
+// rendered once outside the loop, so techniques compare on the same basis (the oracle at 1 and
+// 64 rays here; soft-shadow techniques are compared against Technique/.../reference-64).
+//
+// Counters: fps (frames or technique runs per wall-clock second), <pass>_ms (Stats::time_ms,
+// same-named passes summed per frame, averaged over iterations), and the frame's work counters.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/parallel.h"
+#include "render/eye_pass.h"
+#include "render/frame.h"
+#include "render/stats_json.h"
+#include "scene/builtin_scenes.h"
+#include "shadows/technique.h"
+
+namespace penumbra {
+namespace {
+
+// Scenes are built once per process, before any timing loop (building `fractal` costs more
+// than rendering it).
+const Scene& benchScene(const std::string& name) {
+  static std::mutex mutex;
+  static std::map<std::string, Scene> scenes;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto it = scenes.find(name);
+  if (it == scenes.end()) it = scenes.emplace(name, builtinScene(name)).first;
+  return it->second;
+}
+
+// Sums Stats::time_ms per pass name over every iteration, keeping the first-seen order so the
+// counters read in pipeline order in the console.
+class PassTimes {
+ public:
+  void add(const Stats& stats) {
+    for (const auto& [name, ms] : stats.time_ms) {
+      auto it = index_.find(name);
+      if (it == index_.end()) {
+        it = index_.emplace(name, totals_.size()).first;
+        totals_.emplace_back(name, 0.0);
+      }
+      totals_[it->second].second += ms;
+    }
+  }
+  void report(benchmark::State& state) const {
+    const double n = double(state.iterations());
+    for (const auto& [name, ms] : totals_) state.counters[name + "_ms"] = ms / n;
+  }
+
+ private:
+  std::map<std::string, size_t> index_;
+  std::vector<std::pair<std::string, double>> totals_;
+};
+
+void hardShadowFrame(benchmark::State& state, const std::string& scene_name, int width,
+                     int height) {
+  const Scene& scene = benchScene(scene_name);
+  FrameOptions options;
+  options.width = width;
+  options.height = height;
+  options.technique.kind = TechniqueKind::ShadowVolume;
+  options.technique.volume_mode = VolumeMode::Auto;
+  PassTimes passes;
+  Stats last;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    // Timed by hand too: fps must be frames per wall-clock second, and the library's rate
+    // counters divide by the main thread's CPU time.
+    const auto start = std::chrono::steady_clock::now();
+    FrameResult frame = renderFrame(scene, options);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(frame.color.data());
+    passes.add(frame.total);
+    last = std::move(frame.total);
+  }
+  if (seconds <= 0.0) return;
+  const double fps = double(state.iterations()) / seconds;
+  state.counters["fps"] = fps;
+  state.counters["frame_ms"] = 1e3 / fps;
+  passes.report(state);
+  state.counters["scene_triangles"] = double(scene.triangleCount());
+  // Set up for rasterization after clipping, eye pass and volumes together.
+  state.counters["triangles"] = double(last.triangles);
+  state.counters["pixels_rasterized"] = double(last.pixels_rasterized);
+  state.counters["silhouette_edges"] = double(last.silhouette_edges);
+  state.counters["tiles_culled"] = double(last.tiles_culled);
+  state.counters["threads"] = double(workerCount());
+  state.SetLabel(fmt::format("{} {}x{} {} tris {} lights, volume (auto): {:.1f} fps", scene_name,
+                             width, height, scene.triangleCount(), scene.lights.size(), fps));
+}
+
+void technique(benchmark::State& state, const std::string& scene_name, int width, int height,
+               const TechniqueOptions& options, const std::string& description) {
+  const Scene& scene = benchScene(scene_name);
+  const View view = scene.camera.makeView(width, height);
+  Stats eye_stats;
+  const EyeBuffers eye = renderEyePass(scene, view, eye_stats, options.simd);
+  PassTimes passes;
+  Stats last;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    Stats frame;
+    const auto start = std::chrono::steady_clock::now();
+    for (const Light& light : scene.lights) {
+      TechniqueResult result = renderShadows(options, scene, light, view, eye);
+      benchmark::DoNotOptimize(result.visibility.data());
+      frame.add(result.stats);
+    }
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    passes.add(frame);
+    last = std::move(frame);
+  }
+  if (seconds <= 0.0) return;
+  const double per_second = double(state.iterations()) / seconds;
+  state.counters["fps"] = per_second;
+  state.counters["technique_ms"] = 1e3 / per_second;
+  passes.report(state);
+  if (last.rays > 0) {
+    state.counters["rays"] = double(last.rays);
+    state.counters["Mrays/s"] = double(last.rays) * per_second * 1e-6;
+  }
+  state.counters["pixels_rasterized"] = double(last.pixels_rasterized);
+  state.counters["threads"] = double(workerCount());
+  state.SetLabel(fmt::format("{} {}x{} {} lights, {}: {:.1f} ms", scene_name, width, height,
+                             scene.lights.size(), description, 1e3 / per_second));
+}
+
+benchmark::internal::Benchmark* timed(benchmark::internal::Benchmark* b, double min_time) {
+  return b->Unit(benchmark::kMillisecond)->UseRealTime()->MinWarmUpTime(0.05)->MinTime(min_time);
+}
+
+bool registerFrameBenchmarks() {
+  struct Size {
+    int width, height;
+  };
+  for (const char* scene : {"columns", "spheres", "fractal"}) {
+    for (const Size size : {Size{640, 427}, Size{1920, 1080}}) {
+      const std::string name =
+          fmt::format("HardShadowFrame/{}/{}x{}", scene, size.width, size.height);
+      timed(benchmark::RegisterBenchmark(name.c_str(),
+                                         [scene = std::string(scene), size](benchmark::State& s) {
+                                           hardShadowFrame(s, scene, size.width, size.height);
+                                         }),
+            0.3);
+    }
+  }
+
+  struct TechniqueCase {
+    std::string id;
+    TechniqueOptions options;
+    double min_time;
+  };
+  std::vector<TechniqueCase> cases;
+  {
+    TechniqueOptions volume;
+    volume.kind = TechniqueKind::ShadowVolume;
+    cases.push_back({"volume", volume, 0.3});
+    TechniqueOptions hard;
+    hard.kind = TechniqueKind::Reference;
+    hard.hard = true;
+    cases.push_back({"reference-hard", hard, 0.3});
+    // 64 rays takes over a second a frame on 2 cores: one iteration per repetition is enough,
+    // the rounds of bench/run_benchmarks.sh give the spread.
+    TechniqueOptions soft;
+    soft.kind = TechniqueKind::Reference;
+    soft.rays = 64;
+    cases.push_back({"reference-64", soft, 0.5});
+  }
+  for (const TechniqueCase& c : cases) {
+    const std::string name = fmt::format("Technique/columns/640x427/{}", c.id);
+    const std::string description = describeTechnique(c.options);
+    timed(benchmark::RegisterBenchmark(name.c_str(),
+                                       [options = c.options, description](benchmark::State& s) {
+                                         technique(s, "columns", 640, 427, options, description);
+                                       }),
+          c.min_time);
+  }
+  return true;
+}
+
+const bool frame_registered = registerFrameBenchmarks();
+
+}  // namespace
+}  // namespace penumbra
