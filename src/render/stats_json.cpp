@@ -28,6 +28,9 @@ json statsToJson(const Stats& s) {
       {"silhouette_edges", s.silhouette_edges},
       {"wedges", s.wedges},
       {"triangles", s.triangles},
+      {"rays", s.rays},
+      {"penumbra_tests", s.penumbra_tests},
+      {"penumbra_inside", s.penumbra_inside},
       {"time_ms", passes},
       {"total_ms", s.totalMs()},
   };
@@ -104,6 +107,13 @@ std::string describeTechnique(const TechniqueOptions& options) {
     case TechniqueKind::Reference:
       return options.hard ? fmt::format("{} (hard)", name)
                           : fmt::format("{} ({} rays)", name, options.rays);
+    case TechniqueKind::Wedge2002:
+      return fmt::format("{} ({})", name, volumeModeName(options.volume_mode));
+    case TechniqueKind::WedgeThreePass:
+    case TechniqueKind::WedgeSinglePass:
+      return fmt::format("{} ({}, cull {}, {}x{} tiles)", name, volumeModeName(options.volume_mode),
+                         cullModeName(options.cull), 1 << options.tile_level,
+                         1 << options.tile_level);
   }
   return name;
 }
@@ -135,7 +145,10 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
         {"volume_mode", volumeModeName(t.volume_mode)},
         {"rays", t.rays},
         {"hard", t.hard},
-        {"seed", t.seed}}},
+        {"seed", t.seed},
+        {"cull", cullModeName(t.cull)},
+        {"tile_size", 1 << t.tile_level},
+        {"smooth_falloff", t.smooth_falloff}}},
       {"threads", effectiveThreads(options)},
       {"simd", t.simd},
       {"machine", {{"cpu", machine.cpu_model}, {"cores", machine.cores}}},
