@@ -35,7 +35,7 @@ inline OracleComparison compareHardWithOracle(const Scene& scene, const View& vi
   reference.kind = TechniqueKind::Reference;
   reference.hard = true;
   c.oracle = renderShadows(reference, scene, light, view, c.eye);
-  c.agreement = compareHardShadows(c.technique.visibility, c.oracle.visibility, coveredMask(c.eye));
+  c.agreement = compareHardShadows(c.technique.visibility, c.oracle.visibility, c.eye.depth.depth);
   return c;
 }
 

@@ -14,6 +14,7 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "raster/rasterizer.h"
+#include "shadows/facing_away.h"
 #include "shadows/silhouette.h"
 #include "shadows/volume/volume_geometry.h"
 #include "shadows/volume/volume_mode.h"
@@ -55,6 +56,7 @@ TechniqueResult renderShadowVolume(const TechniqueOptions& options, const Scene&
           result.visibility.at(x, int(y)) = 0.0f;
       }
     });
+    shadowFacingAway(scene, light, view, eye, result.visibility);
   }
   return result;
 }

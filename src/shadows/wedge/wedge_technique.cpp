@@ -22,6 +22,7 @@
 #include "core/timer.h"
 #include "raster/cull_tiles.h"
 #include "raster/rasterizer.h"
+#include "shadows/facing_away.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
 #include "shadows/wedge/wedge_culling.h"
@@ -164,9 +165,14 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         TileWork& tw = work[v.tile];
         ++tw.tested;
-        if (role.wedge == kNoWedge) {
-          // A volume quad without a wedge (zero radius, or a nearly parallel edge): a wedge of
-          // zero thickness, entered and left at once: -255 in front, +255 behind (z-pass).
+        const bool entry = role.wedge != kNoWedge && t.facing * role.face_sign > 0;
+        if (!entry) {
+          // Umbra quads that are not a front-facing wedge face: back-facing front planes, where
+          // rays leave a wedge through its front plane (s_i = 1, counted on the rasterized face
+          // so that it pairs exactly with the entries the neighbouring wedges rasterize), and
+          // quads with no wedge face (zero radius, nearly parallel edges, crossing front rays):
+          // wedges of zero thickness, entered and left at once. Where the quad is in front of
+          // the point, -255 if it faces the eye, +255 if not (z-pass).
           if (role.umbra_weight == 0) return;
           WedgeKernelWork k;
           k.umbra_value = umbraValue(role, t, full);
@@ -174,7 +180,6 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
           wedgeKernel(e, k, target, tw.umbra, options.simd);
           return;
         }
-        if (t.facing * role.face_sign <= 0) return;  // only front-facing wedge faces
         wedge2002Kernel(e, frame.screen[size_t(role.wedge)], role.face, float(full), target,
                         tw.penumbra);
       },
@@ -184,17 +189,18 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
 
 }  // namespace
 
-TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene,
-                             const Light& light, const View& view, const EyeBuffers& eye) {
+WedgeLi renderWedgeLi(const TechniqueOptions& options, const Scene& scene, const Light& light,
+                      const View& view, const EyeBuffers& eye) {
   PENUMBRA_CHECK(options.tile_level >= kMinTileLevel && options.tile_level <= kMaxTileLevel,
                  "tile size 2^{} is outside 2^{}..2^{}", options.tile_level, kMinTileLevel,
                  kMaxTileLevel);
   PENUMBRA_CHECK(options.light_count >= 1 && options.light_count <= 255,
                  "light count {} is outside 1..255", options.light_count);
-  TechniqueResult result;
+  WedgeLi result;
   Stats& stats = result.stats;
   // 255 per light, 255 / n with n lights sharing one buffer (2002 paper, section 7).
   const int full = kLiFull / options.light_count;
+  result.full = full;
   WedgeFrame frame;
   {
     PassTimer timer(stats, "wedges");
@@ -202,7 +208,8 @@ TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene
     stats.silhouette_edges += frame.silhouette_edges;
     stats.wedges += frame.wedges.size();
   }
-  LiBuffer li(view.width, view.height, int16_t(full));
+  LiBuffer& li = result.li;
+  li.resize(view.width, view.height, int16_t(full));
   switch (options.kind) {
     case TechniqueKind::WedgeThreePass: {
       {
@@ -226,9 +233,18 @@ TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene
     default:
       throw Error("renderWedges: not a wedge technique");
   }
+  return result;
+}
+
+TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene,
+                             const Light& light, const View& view, const EyeBuffers& eye) {
+  WedgeLi wedges = renderWedgeLi(options, scene, light, view, eye);
+  TechniqueResult result;
+  result.stats = std::move(wedges.stats);
   {
-    PassTimer timer(stats, "resolve");
-    result.visibility = liToVisibility(li, eye.depth.depth, full);
+    PassTimer timer(result.stats, "resolve");
+    result.visibility =
+        liToVisibility(wedges.li, eye.depth.depth, wedges.full, !(light.radius > 0.0f));
   }
   return result;
 }

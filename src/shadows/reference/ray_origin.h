@@ -1,0 +1,48 @@
+#pragma once
+// Where the oracle's shadow rays start for a pixel: the pixel's depth-buffer point put back on
+// the surface the eye pass says is visible there, and nudged off it toward the eye's side.
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "core/view.h"
+#include "scene/scene.h"
+
+namespace penumbra {
+
+struct RayStart {
+  dvec3 origin{0.0};
+  dvec3 plane_point{0.0};   // a vertex of the visible triangle
+  dvec3 plane_normal{0.0};  // unnormalised, on the side the eye sees; zero: no usable plane
+
+  // The visible surface itself blocks a ray toward a point strictly on its far side: the
+  // shaded point lies on it, so such a ray enters it at once. Decided exactly from the
+  // triangle's own vertices, and those rays are never traced (an offset origin would let rays
+  // from near an edge slip past the triangle). Shadow volumes make the same call: a face turned
+  // away from the light is in shadow, a face exactly edge-on to it casts nothing.
+  bool intoSurface(const dvec3& target) const {
+    return glm::dot(plane_normal, target - plane_point) < 0.0;
+  }
+};
+
+class RayOrigins {
+ public:
+  RayOrigins(const Scene& scene, const View& view);
+
+  // Triangles in the scene: valid ids are below this (see EyeBuffers::primitive).
+  uint64_t triangleCount() const { return offsets_.back(); }
+
+  // `primitive` is the pixel's global triangle id or kNoPrimitive; depth > 0.
+  RayStart start(int x, int y, float depth, uint32_t primitive) const;
+
+ private:
+  const Scene& scene_;
+  const View& view_;
+  double pixel_angle_;             // radians per pixel at the image centre
+  std::vector<uint64_t> offsets_;  // first global id of every mesh, then the total
+};
+
+// The point of triangle abc closest to q (Ericson, Real-Time Collision Detection, 5.1.5).
+dvec3 closestPointOnTriangle(const dvec3& q, const dvec3& a, const dvec3& b, const dvec3& c);
+
+}  // namespace penumbra

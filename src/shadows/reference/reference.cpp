@@ -1,0 +1,159 @@
+#include "shadows/reference/reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "core/error.h"
+#include "core/parallel.h"
+#include "core/progress.h"
+#include "core/timer.h"
+#include "shadows/reference/embree_scene.h"
+#include "shadows/reference/light_sampling.h"
+#include "shadows/reference/ray_origin.h"
+
+namespace penumbra {
+namespace {
+
+constexpr int kMaxRays = 4096;
+
+// Shortens every shadow ray by this relative amount so the point the ray aims at (the light's
+// centre or a point on its surface) never counts as an occluder of itself.
+constexpr double kTfarShrink = 1e-6;
+
+ShadowRay makeRay(const vec3& origin, const vec3& direction_unit, double distance) {
+  ShadowRay ray;
+  ray.origin = origin;
+  ray.direction = direction_unit;
+  ray.tfar = float(distance * (1.0 - kTfarShrink));
+  return ray;
+}
+
+struct RowCounters {
+  uint64_t z_reads = 0;
+  uint64_t rays = 0;
+};
+
+}  // namespace
+
+TechniqueResult renderReference(const TechniqueOptions& options, const Scene& scene,
+                                const Light& light, const View& view, const EyeBuffers& eye) {
+  PENUMBRA_CHECK(options.rays >= 1 && options.rays <= kMaxRays,
+                 "reference rays per pixel is {} but must be in 1..{}", options.rays, kMaxRays);
+  PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
+  PENUMBRA_CHECK(std::isfinite(light.radius) && light.radius >= 0.0f,
+                 "light radius {} must be a finite number >= 0", light.radius);
+  const int width = eye.depth.width();
+  const int height = eye.depth.height();
+  PENUMBRA_CHECK(width == view.width && height == view.height,
+                 "eye buffers are {}x{} but the view is {}x{}", width, height, view.width,
+                 view.height);
+  PENUMBRA_CHECK(eye.primitive.empty() ||
+                     (eye.primitive.width() == width && eye.primitive.height() == height),
+                 "eye primitive ids are {}x{} but the depth buffer is {}x{}",
+                 eye.primitive.width(), eye.primitive.height(), width, height);
+
+  const RayOrigins origins(scene, view);
+  for (size_t i = 0; i < eye.primitive.size(); ++i) {
+    const uint32_t id = eye.primitive[i];
+    PENUMBRA_CHECK(id == kNoPrimitive || id < origins.triangleCount(),
+                   "eye pixel {} names triangle {} but the scene has {} triangles", i, id,
+                   origins.triangleCount());
+  }
+
+  TechniqueResult result;
+  result.visibility.resize(width, height, 1.0f);
+  Stats& stats = result.stats;
+
+  std::unique_ptr<EmbreeScene> bvh;
+  {
+    PassTimer timer(stats, "reference_bvh");
+    bvh = std::make_unique<EmbreeScene>(scene);
+  }
+
+  PassTimer timer(stats, "reference");
+  const bool hard = options.hard || light.radius == 0.0f;
+  const int n = hard ? 1 : options.rays;
+  const dvec3 center(light.center);
+  const double radius = light.radius;
+  std::vector<RowCounters> row_counters(static_cast<size_t>(height));
+  ProgressBar progress("reference", uint64_t(height), options.show_progress);
+
+  // One work item per row: rows never share pixels, each pixel's rays are a function of the
+  // pixel alone, and counters are summed in row order, so results do not depend on threads.
+  parallelFor(size_t(height), [&](size_t row) {
+    const int y = int(row);
+    const float* depth = eye.depth.depth.row(y);
+    const uint32_t* primitive = eye.primitive.empty() ? nullptr : eye.primitive.row(y);
+    float* visibility = result.visibility.row(y);
+    RowCounters& counters = row_counters[row];
+    std::vector<ShadowRay> rays;
+    std::vector<uint8_t> blocked;
+
+    if (hard) {
+      // One ray per pixel to the light centre; a row's rays converge on it, so they make
+      // coherent packets.
+      std::vector<int> columns;
+      for (int x = 0; x < width; ++x) {
+        if (!(depth[x] > 0.0f)) continue;  // background (depth 0) stays fully lit
+        ++counters.z_reads;
+        const RayStart start =
+            origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive);
+        const dvec3 to_light = center - start.origin;
+        const double distance = glm::length(to_light);
+        if (distance == 0.0) continue;  // the light sits on the point: nothing in between
+        ++counters.rays;
+        if (start.intoSurface(center)) {
+          visibility[x] = 0.0f;
+          continue;
+        }
+        rays.push_back(makeRay(vec3(start.origin), vec3(to_light / distance), distance));
+        columns.push_back(x);
+      }
+      blocked.resize(rays.size());
+      bvh->occluded(rays.data(), rays.size(), options.simd, blocked.data());
+      for (size_t i = 0; i < rays.size(); ++i) visibility[columns[i]] = blocked[i] ? 0.0f : 1.0f;
+      progress.add();
+      return;
+    }
+
+    std::vector<vec2> samples(static_cast<size_t>(n));
+    rays.resize(size_t(n));
+    blocked.resize(size_t(n));
+    for (int x = 0; x < width; ++x) {
+      if (!(depth[x] > 0.0f)) continue;
+      ++counters.z_reads;
+      const RayStart start =
+          origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive);
+      // A point inside the light sees all of it.
+      if (glm::length(center - start.origin) <= radius) continue;
+      const SphereCone cone = makeSphereCone(start.origin, center, radius);
+      stratifiedSamples(n, options.seed, uint32_t(x), uint32_t(y), samples.data());
+      const vec3 origin(start.origin);
+      size_t traced = 0;
+      for (int k = 0; k < n; ++k) {
+        const ConeSample s = sampleSphereCone(cone, concentricDisk(samples[size_t(k)]));
+        if (start.intoSurface(start.origin + dvec3(s.direction) * double(s.distance))) {
+          continue;  // blocked by the surface itself
+        }
+        rays[traced++] = makeRay(origin, s.direction, s.distance);
+      }
+      bvh->occluded(rays.data(), traced, options.simd, blocked.data());
+      int unblocked = 0;
+      for (size_t k = 0; k < traced; ++k) unblocked += blocked[k] ? 0 : 1;
+      visibility[x] = float(unblocked) / float(n);
+      counters.rays += uint64_t(n);
+    }
+    progress.add();
+  });
+  progress.finish();
+
+  for (const RowCounters& c : row_counters) {
+    stats.z_reads += c.z_reads;
+    stats.rays += c.rays;
+  }
+  return result;
+}
+
+}  // namespace penumbra
