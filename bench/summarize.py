@@ -80,7 +80,8 @@ def summarize(out_dir):
     summary = {"machine": ours.get("machine", {}),
                "simd_target": context.get("penumbra_simd_target"),
                "threads": context.get("penumbra_threads"),
-               "hard_shadow_frames": [], "eye_pass": [], "techniques": []}
+               "hard_shadow_frames": [], "eye_pass": [], "techniques": [],
+               "soft_shadow_frames": []}
     if peer and peer["runs"]:
         first = peer["runs"][0]
         summary["peer"] = {k: first.get(k) for k in
@@ -110,6 +111,12 @@ def summarize(out_dir):
                                         "Mpix/s": counter(runs, "Mpix/s"),
                                         "Mtri/s": counter(runs, "Mtri/s"),
                                         "eye_ms": counter(runs, "eye_ms")})
+        elif parts[0] == "SoftShadowFrame":
+            summary["soft_shadow_frames"].append(
+                {"scene": parts[1], "size": parts[2], "technique": parts[3],
+                 "fps": counter(runs, "fps"), "frame_ms": counter(runs, "frame_ms"),
+                 "pass_ms": {p[:-3]: counter(runs, p)["median"] for p in runs[0]
+                             if p.endswith("_ms") and p != "frame_ms"}})
         elif parts[0] == "Technique":
             summary["techniques"].append({"scene": parts[1], "size": parts[2],
                                           "technique": parts[3], "ms": counter(runs, "technique_ms"),
@@ -127,6 +134,15 @@ def summarize(out_dir):
         base = volume.get((t["scene"], t["size"]))
         if base and t["technique"] != "volume":
             t["ms_vs_volume"] = t["ms"]["median"] / base
+
+    # "At least 50x faster than the oracle at 64 rays": the oracle's frame over each wedge frame
+    # of the same scene, medians of the same session.
+    oracle = {(t["scene"], t["size"]): t["frame_ms"]["median"]
+              for t in summary["soft_shadow_frames"] if t["technique"].startswith("reference")}
+    for t in summary["soft_shadow_frames"]:
+        key = (t["scene"], t["size"])
+        if key in oracle and not t["technique"].startswith("reference"):
+            t["oracle_frame_over_this"] = oracle[key] / t["frame_ms"]["median"]
 
     order = {"columns": 0, "spheres": 1, "fractal": 2}
     summary["hard_shadow_frames"].sort(
@@ -153,9 +169,10 @@ def to_markdown(s, have_peer):
              f'{m.get("date", "?")}, commit {m.get("commit", "?")}, load average '
              f'{m.get("load_average_before", "?")} before / {m.get("load_average_after", "?")} after; '
              f'medians over {m.get("rounds", "?")} rounds, range in brackets.', ""]
-    lines += ["Hard-shadow frame (eye pass + shadow volumes, auto z-pass/z-fail + shading):", "",
-              "| scene | size | penumbra fps | eye / silhouette / volumes / resolve / shade ms"
-              " | llvmpipe fps | ratio |", "|---|---|---|---|---|---|"]
+    if s["hard_shadow_frames"]:
+        lines += ["Hard-shadow frame (eye pass + shadow volumes, auto z-pass/z-fail + shading):",
+                  "", "| scene | size | penumbra fps | eye / silhouette / volumes / resolve / shade "
+                  "ms | llvmpipe fps | ratio |", "|---|---|---|---|---|---|"]
     for r in s["hard_shadow_frames"]:
         passes = " / ".join(f'{r["pass_ms"].get(p, 0):.1f}' for p in PASS_ORDER)
         fps = r["fps"]
@@ -195,6 +212,19 @@ def to_markdown(s, have_peer):
             vs = f'{t["ms_vs_volume"]:.1f}x' if "ms_vs_volume" in t else ""
             lines.append(f'| {t["scene"]} | {t["size"]} | {t["technique"]} | '
                          f'{t["ms"]["median"]:.1f} | {rays} | {vs} |')
+    if s.get("soft_shadow_frames"):
+        lines += ["", "Soft-shadow frame (eye pass + technique + shading; wedges: full culling, 8x8 "
+                      "tiles, -tile32: 32x32; last column: the oracle's frame over the wedge frame, "
+                      "same size):", "",
+                  "| scene | size | technique | fps | frame ms | passes ms | oracle-64 frame / this |",
+                  "|---|---|---|---|---|---|---|"]
+        for t in s["soft_shadow_frames"]:
+            fps = t["fps"]
+            passes = ", ".join(f"{k} {v:.1f}" for k, v in t["pass_ms"].items())
+            ratio = f'{t["oracle_frame_over_this"]:.0f}x' if "oracle_frame_over_this" in t else ""
+            lines.append(f'| {t["scene"]} | {t["size"]} | {t["technique"]} | '
+                         f'{fps["median"]:.1f} [{fps["min"]:.1f}-{fps["max"]:.1f}] | '
+                         f'{t["frame_ms"]["median"]:.1f} | {passes} | {ratio} |')
     return "\n".join(lines) + "\n"
 
 

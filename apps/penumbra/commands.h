@@ -16,5 +16,6 @@ struct Subcommand {
 Subcommand addRenderCommand(CLI::App& app);
 Subcommand addCompareCommand(CLI::App& app);
 Subcommand addScenesCommand(CLI::App& app);
+Subcommand addBenchCommand(CLI::App& app);
 
 }  // namespace penumbra::cli

@@ -1,4 +1,5 @@
-// penumbra: render a scene with a shadow technique, compare results, list scenes.
+// penumbra: render a scene with a shadow technique, compare results, list scenes, sweep the
+// wedge implementations (bench).
 // Every error ends as "penumbra: error: <message>" on stderr and exit code 1.
 #include <cstdio>
 #include <exception>
@@ -42,6 +43,7 @@ int run(int argc, char** argv) {
       penumbra::cli::addRenderCommand(app),
       penumbra::cli::addCompareCommand(app),
       penumbra::cli::addScenesCommand(app),
+      penumbra::cli::addBenchCommand(app),
   };
   // CLI11 would call an unknown command word a missing subcommand; name it instead.
   if (argc > 1 && argv[1][0] != '-') {

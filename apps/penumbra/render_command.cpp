@@ -27,6 +27,9 @@ struct RenderArgs {
   int rays = TechniqueOptions{}.rays;
   bool hard = false;
   std::string volume_mode = "auto";
+  std::string cull = cullModeName(TechniqueOptions{}.cull);
+  int tile_size = 1 << TechniqueOptions{}.tile_level;
+  bool smooth = false;
   int width = 0;
   int height = 0;
   int threads = 0;
@@ -60,10 +63,20 @@ std::string defaultOutput(const std::string& scene_name) {
   return "out/" + (name.empty() ? std::string("scene") : name) + ".png";
 }
 
+// Culling tiles are 2^n x 2^n pixels, n = 1..8 (TechniqueOptions::tile_level).
+int tileLevel(int tile_size) {
+  for (int level = 1; level <= 8; ++level)
+    if (tile_size == 1 << level) return level;
+  throw Error(fmt::format("--tile-size {} is not a power of two in 2..256", tile_size));
+}
+
 int runRender(const RenderArgs& args) {
   FrameOptions options;
   options.technique.kind = parseTechniqueName(args.technique);
   options.technique.volume_mode = parseVolumeMode(args.volume_mode);
+  options.technique.cull = parseCullMode(args.cull);
+  options.technique.tile_level = tileLevel(args.tile_size);
+  options.technique.smooth_falloff = args.smooth;
   options.technique.rays = args.rays;
   options.technique.hard = args.hard;
   options.technique.seed = args.seed;
@@ -129,6 +142,13 @@ Subcommand addRenderCommand(CLI::App& app) {
   cmd->add_flag("--hard", args->hard, "Hard shadows from the light centre");
   cmd->add_option("--volume-mode", args->volume_mode, "Shadow volumes: auto, zpass or zfail")
       ->capture_default_str();
+  cmd->add_option("--cull", args->cull,
+                  "Wedge tile culling: none, zmax (z-max only) or full (z-min and z-max)")
+      ->capture_default_str();
+  cmd->add_option("--tile-size", args->tile_size,
+                  "Wedge culling tile size in pixels, a power of two in 2..256")
+      ->capture_default_str();
+  cmd->add_flag("--smooth", args->smooth, "Wedges: smooth falloff s' = 3s^2 - 2s^3");
   cmd->add_option("--width", args->width, "Image width (default: the scene's)")
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height (default: the scene's)")

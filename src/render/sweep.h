@@ -1,0 +1,143 @@
+#pragma once
+// The 2004 paper's evaluation (section 7, Figures 8-10), reproduced: for each scene one eye
+// pass, then every wedge implementation x culling mode x culling-tile size, each run several
+// times for a median time, with its exact work counters. Also the 2002 algorithm (no culling:
+// the baseline of Figure 10a) and the ray-traced oracle (the "50x faster" claim). `penumbra
+// bench` (apps/penumbra/bench_command.cpp) prints and plots what this returns;
+// docs/reproducing-2004.md reads it against the paper.
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/stats.h"
+#include "shadows/technique.h"
+
+namespace penumbra {
+
+struct SweepOptions {
+  std::vector<std::string> scenes = {"columns", "fractal", "year2002"};
+  int width = 640;  // the papers' image size
+  int height = 427;
+  int repeat = 5;  // timed runs per configuration; the median is reported
+  std::vector<TechniqueKind> implementations = {TechniqueKind::WedgeThreePass,
+                                                TechniqueKind::WedgeSinglePass};
+  std::vector<CullMode> cull_modes = {CullMode::None, CullMode::ZMax, CullMode::Full};
+  std::vector<int> tile_levels = {1, 2, 3, 4, 5, 6, 7, 8};  // tiles of 2^n x 2^n pixels
+  bool original_2002 = true;  // one wedge-2002 configuration per scene (Figure 10a)
+  int oracle_rays = 64;       // the oracle on `oracle_scene` (0: not run)
+  std::string oracle_scene = "columns";
+  int oracle_repeat = 1;  // the oracle takes ~1 s a run on 2 cores
+  bool smooth_falloff = false;
+  bool simd = true;
+  int threads = 0;             // 0: all cores
+  bool show_progress = false;  // progress bar on a terminal (core/progress.h)
+  // Called with one line per finished step (scene loaded, eye pass, mismatches); may be empty.
+  std::function<void(const std::string&)> log;
+};
+
+// One configuration of one scene. Counters are those of the first run, summed over the scene's
+// lights; every later run must give the same (counters_repeatable).
+struct SweepRow {
+  std::string scene;
+  int width = 0, height = 0;
+  int lights = 0;
+  TechniqueKind kind = TechniqueKind::WedgeThreePass;
+  CullMode cull = CullMode::None;  // wedge-2002 and the oracle: None
+  int tile_level = 0;              // 0: not applicable (wedge-2002, oracle)
+  int rays = 0;                    // the oracle's rays per pixel
+  int runs = 0;
+  Stats counters;  // time_ms empty; see pass_ms
+  bool counters_repeatable = true;
+  double technique_ms = 0, technique_ms_min = 0, technique_ms_max = 0;  // all lights, median
+  // Process CPU time of the same runs (all threads), median: on a shared machine it moves less
+  // with the neighbours' load than wall-clock time does.
+  double technique_cpu_ms = 0;
+  std::vector<std::pair<std::string, double>> pass_ms;  // median per pass name, run order
+  double eye_ms = 0;    // the scene's eye pass and shading, medians (the same in every row of a
+  double shade_ms = 0;  // scene): frame_ms = eye_ms + technique_ms + shade_ms
+  double frame_ms = 0;
+  // Culling must never change a pixel (2004 paper, section 4): pixels whose visibility differs
+  // from this implementation's CullMode::None run at the first swept level (its first run when
+  // None is not swept; -1: not compared, e.g. wedge-2002).
+  int64_t cull_mismatch_pixels = -1;
+  // Informational: pixels differing from wedge-3pass without culling, and the largest
+  // difference (the implementations and the 2002 algorithm round differently in places).
+  int64_t pixels_differing_from_3pass = -1;
+  double max_diff_from_3pass = 0;
+
+  // Figure 8's count: depth-buffer reads and LI-buffer writes of pixels.
+  uint64_t memoryAccesses() const { return counters.z_reads + counters.stencil_writes; }
+  // One read of a tile's (z-min, z-max) pair per culling test; none without culling. Counting
+  // them is what gives a memory-optimal tile size: pixel reads alone only fall as tiles shrink.
+  uint64_t tileRangeReads() const;
+  uint64_t memoryAccessesWithTiles() const { return memoryAccesses() + tileRangeReads(); }
+  double passMs(const std::string& name) const;  // 0 when the pass did not run
+  std::string techniqueLabel() const;            // "wedge-3pass", "reference"
+};
+
+struct SweepResult {
+  std::vector<SweepRow> rows;  // scene by scene, in SweepOptions order
+  std::string cpu;             // machine, as stats_json.h's machineInfo
+  int cores = 0;
+  int threads = 0;
+  std::string simd_target;
+  std::string date;  // UTC, ISO 8601
+
+  uint64_t cullMismatches() const;  // rows whose visibility changed with culling
+  uint64_t unrepeatableRows() const;
+};
+
+// Runs the sweep. Throws penumbra::Error for bad options (unknown scene or technique, tile level
+// outside 1..8, repeat < 1).
+SweepResult runSweep(const SweepOptions& options);
+
+// Derived numbers of one scene, for the summary and the comparison with the paper. Speedups
+// are ratios of median times; "best" tiles minimise memory accesses or time with full culling.
+struct SweepSceneSummary {
+  std::string scene;
+  struct Implementation {
+    TechniqueKind kind = TechniqueKind::WedgeThreePass;
+    int best_level_memory = 0;        // full culling, fewest z reads + stencil writes
+    int best_level_memory_tiles = 0;  // same, tile z-range reads counted too
+    int best_level_time = 0;          // full culling, fastest technique
+    double restructured_speedup = 0;  // wedge-2002 time / this without culling (Figure 10a)
+    double culling_speedup = 0;       // none / full at best_level_time, technique time
+    double culling_speedup_pass = 0;  // same, on the penumbra pass (single pass: the pass)
+    double zmax_speedup_pass = 0;     // none / zmax at z-max's fastest level, same pass
+    double speedup_vs_2002 = 0;       // wedge-2002 time / this with full culling, best level
+    // penumbra_tests / penumbra_inside per culling mode, at the levels above: the distance
+    // from perfect culling (1: only pixels truly inside a wedge were tested).
+    double none_tests_per_inside = 0;
+    double zmax_tests_per_inside = 0;
+    double full_tests_per_inside = 0;
+  };
+  std::vector<Implementation> implementations;
+  // Single pass vs three pass, full culling, averaged over tiles 8x8..32x32 (section 7's range):
+  // 1 - single / three of stencil writes, z reads, and their sum.
+  double single_fewer_stencil_writes = 0;
+  double single_fewer_z_reads = 0;
+  double single_fewer_accesses = 0;
+  // The same, had the three-pass umbra passes run without tile culling (as a GPU stencil pass
+  // is counted when only its z-test is modelled): its umbra reads taken from CullMode::None.
+  double single_fewer_accesses_unculled_umbra = 0;
+  double oracle_frame_ratio = 0;  // oracle frame / fastest wedge frame (0: no oracle row)
+};
+// The reference configuration for "no culling": CullMode::None at the largest swept level, where
+// culling tiles are no smaller than the rasterizer's bin tiles, so no extra splitting is timed.
+std::vector<SweepSceneSummary> summarizeSweep(const SweepResult& result);
+
+// One CSV line per row, with a header; columns documented in docs/reproducing-2004.md.
+void writeSweepCsv(std::ostream& out, const SweepResult& result);
+void writeSweepCsv(const std::string& path, const SweepResult& result);
+// Markdown: machine, per-scene summary tables, mismatches. Used by `penumbra bench`.
+std::string sweepSummaryMarkdown(const SweepResult& result);
+
+// The plotting script (scripts/plot_sweep.py) and whether Debian's matplotlib can run it.
+std::string plotScriptPath();
+bool plottingAvailable();
+std::string plotCommand(const std::string& csv_path, const std::string& out_dir);
+
+}  // namespace penumbra
