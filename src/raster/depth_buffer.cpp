@@ -29,14 +29,32 @@ void reducePairs(const float* a, const float* b, int n, float* out) {
   if (n & 1) out[pairs] = kMin ? minOf(a[n - 1], b[n - 1]) : maxOf(a[n - 1], b[n - 1]);
 }
 
+// Level 1 row: min and max of the same pixels in one pass, so the depth rows are read once.
+void reducePixelPairs(const float* a, const float* b, int n, float* out_min, float* out_max) {
+  const int pairs = n / 2;
+  for (int i = 0; i < pairs; ++i) {
+    const float a0 = a[2 * i], a1 = a[2 * i + 1], b0 = b[2 * i], b1 = b[2 * i + 1];
+    out_min[i] = minOf(minOf(a0, b0), minOf(a1, b1));
+    out_max[i] = maxOf(maxOf(a0, b0), maxOf(a1, b1));
+  }
+  if (n & 1) {
+    out_min[pairs] = minOf(a[n - 1], b[n - 1]);
+    out_max[pairs] = maxOf(a[n - 1], b[n - 1]);
+  }
+}
+
 // Builds level `level` rows [row_begin, row_end) from the level below (or from the pixels).
 void reduceRows(const Image<float>& below_min, const Image<float>& below_max, TileDepthRange& r,
                 int row_begin, int row_end) {
   const int n = below_min.width(), below_rows = below_min.height();
   for (int ty = row_begin; ty < row_end; ++ty) {
     const int y0 = 2 * ty, y1 = std::min(2 * ty + 1, below_rows - 1);
-    reducePairs<true>(below_min.row(y0), below_min.row(y1), n, r.zmin.row(ty));
-    reducePairs<false>(below_max.row(y0), below_max.row(y1), n, r.zmax.row(ty));
+    if (&below_min == &below_max) {
+      reducePixelPairs(below_min.row(y0), below_min.row(y1), n, r.zmin.row(ty), r.zmax.row(ty));
+    } else {
+      reducePairs<true>(below_min.row(y0), below_min.row(y1), n, r.zmin.row(ty));
+      reducePairs<false>(below_max.row(y0), below_max.row(y1), n, r.zmax.row(ty));
+    }
   }
 }
 

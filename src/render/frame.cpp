@@ -3,29 +3,37 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "render/eye_pass.h"
-#include "render/shading.h"
+#include "render/shading_reuse.h"
 
 namespace penumbra {
 
-FrameResult renderFrame(const Scene& scene, const FrameOptions& options) {
+void renderFrame(const Scene& scene, const FrameOptions& options, FrameResult& frame) {
   ThreadLimit limit(options.threads);
-  FrameResult frame;
   const int width = options.width > 0 ? options.width : scene.settings.width;
   const int height = options.height > 0 ? options.height : scene.settings.height;
   frame.view = scene.camera.makeView(width, height);
+  frame.eye_stats = Stats{};
+  frame.total = Stats{};
   frame.eye = renderEyePass(scene, frame.view, frame.eye_stats, options.technique.simd);
   frame.total.add(frame.eye_stats);
-  std::vector<const Image<float>*> visibility;
+  frame.lights.clear();
   frame.lights.reserve(scene.lights.size());
   for (const Light& light : scene.lights) {
     frame.lights.push_back(renderShadows(options.technique, scene, light, frame.view, frame.eye));
     frame.total.add(frame.lights.back().stats);
   }
+  std::vector<const Image<float>*> visibility;
   for (const TechniqueResult& r : frame.lights) visibility.push_back(&r.visibility);
   {
     PassTimer timer(frame.total, "shade");
-    frame.color = shadeFrame(scene, frame.view, frame.eye, visibility);
+    shadeFrameInto(scene, frame.view, frame.eye, visibility, frame.color,
+                   options.technique.simd);
   }
+}
+
+FrameResult renderFrame(const Scene& scene, const FrameOptions& options) {
+  FrameResult frame;
+  renderFrame(scene, options, frame);
   return frame;
 }
 

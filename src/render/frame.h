@@ -29,4 +29,9 @@ struct FrameResult {
 
 FrameResult renderFrame(const Scene& scene, const FrameOptions& options);
 
+// The same frame into `frame`, for loops that render frame after frame (a viewer, a benchmark):
+// every field is overwritten, and the colour image keeps its memory when the size is unchanged,
+// so a frame does not pay for allocating and page-faulting a new full-size image.
+void renderFrame(const Scene& scene, const FrameOptions& options, FrameResult& frame);
+
 }  // namespace penumbra

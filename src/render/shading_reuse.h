@@ -1,0 +1,20 @@
+#pragma once
+// shadeFrame (render/shading.h) into a caller-owned image, for loops that render frame after
+// frame (render/frame.h, renderFrame with a FrameResult to reuse): `out` is resized only when
+// the view's size changed and every pixel is written, background included, so no frame pays
+// for allocating, clearing and page-faulting a new full-size colour image. `simd` false runs
+// the scalar twin of the shading kernel (render/shading_kernel.h); both give identical colours.
+#include <vector>
+
+#include "core/image.h"
+#include "core/view.h"
+#include "raster/depth_buffer.h"
+#include "scene/scene.h"
+
+namespace penumbra {
+
+void shadeFrameInto(const Scene& scene, const View& view, const EyeBuffers& eye,
+                    const std::vector<const Image<float>*>& visibility, Image<vec3>& out,
+                    bool simd = true);
+
+}  // namespace penumbra
