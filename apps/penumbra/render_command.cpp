@@ -23,7 +23,7 @@ namespace {
 struct RenderArgs {
   std::string scene;
   std::string output;
-  std::string technique = "volume";
+  std::string technique = "wedge-3pass";  // soft shadows; radius-0 lights give hard ones
   int rays = TechniqueOptions{}.rays;
   bool hard = false;
   std::string volume_mode = "auto";

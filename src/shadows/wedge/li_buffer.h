@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "core/image.h"
+#include "shadows/technique.h"
 
 namespace penumbra {
 
@@ -19,6 +20,22 @@ inline int16_t liAdd(int16_t li, int32_t value) {
 }
 
 // Visibility in [0, 1] = clamp(LI, 0, full) / full; background pixels (depth 0) are 1.
-Image<float> liToVisibility(const LiBuffer& li, const Image<float>& depth, int full = kLiFull);
+// `hard`: the light has no radius, so the buffer holds full - full * count of the hard shadow
+// volume; visibility is then 1 only where the count is 0, the ShadowVolume rule. A count below
+// 0 (a rasterization tie on a shadow boundary; the eye inside a volume with z-pass) is shadow
+// there too, where clamping would make it lit: radius 0 must give the hard image exactly.
+Image<float> liToVisibility(const LiBuffer& li, const Image<float>& depth, int full = kLiFull,
+                            bool hard = false);
+
+// The wedge passes of a wedge technique (wedge_technique.cpp) up to the LI buffer, before it is
+// clamped into visibility: implementations are compared on it (the three-pass and single-pass
+// buffers are equal value for value, values outside [0, full] included).
+struct WedgeLi {
+  LiBuffer li;
+  int full = kLiFull;  // LI of a fully visible light: 255 / TechniqueOptions::light_count
+  Stats stats;
+};
+WedgeLi renderWedgeLi(const TechniqueOptions& options, const Scene& scene, const Light& light,
+                      const View& view, const EyeBuffers& eye);
 
 }  // namespace penumbra

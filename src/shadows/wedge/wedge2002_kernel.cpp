@@ -5,25 +5,9 @@
 #include "shadows/wedge/wedge_frame.h"
 
 namespace penumbra {
-namespace {
-
-// Screen-space plane values along the pixel's view ray are affine in the depth z:
-// E(z) = e0 + c z, and moving away from the eye decreases z (reversed-Z).
-struct RayPlane {
-  float e0, c;
-};
-
-float intensityAt(const ScreenWedge& w, float sx, float sy, float z) {
-  float s = screenIntensity(w.k, w.front.eval(sx, sy, z), w.back.eval(sx, sy, z),
-                            w.left.eval(sx, sy, z), w.right.eval(sx, sy, z));
-  return w.smooth ? smoothFalloff(s) : s;
-}
-
-}  // namespace
 
 void wedge2002Kernel(const TileEdges& e, const ScreenWedge& w, int face, float li_scale,
                      const WedgeKernelTarget& target, WedgeKernelCounts& counts) {
-  const ScreenPlane* planes[5] = {&w.front, &w.back, &w.left, &w.right, &w.bottom};
   for (int y = e.y0; y <= e.y1; ++y) {
     const int ry = y - e.ty0;
     const float row_depth = e.dc + e.db * float(ry);
@@ -39,34 +23,35 @@ void wedge2002Kernel(const TileEdges& e, const ScreenWedge& w, int face, float l
       ++counts.covered;
       const float stored = depth_row[x];
       if (!(stored > 0.0f)) continue;
-      const float z_entry = row_depth + e.da * float(rx);
-      if (!(z_entry > stored)) continue;  // the surface hides the entry: the depth test fails
       const float sx = float(x) + 0.5f;
-      // Entry intensity: 1 on the front plane, 0 on the back and side planes (section 5).
-      float s_f = face == kFront ? 1.0f : 0.0f;
-      if (face == kFar) s_f = intensityAt(w, sx, sy, z_entry);
-      // Exit: the first plane whose inside ends as z decreases from the entry.
-      float z_exit = 0.0f;  // infinity
-      int exit_plane = kFar;
-      for (int p = 0; p < 5; ++p) {
-        const RayPlane rp{(planes[p]->a * sx + planes[p]->b * sy) + planes[p]->d, planes[p]->c};
-        if (!(rp.c > 0.0f) || p == face) continue;
-        const float z = -rp.e0 / rp.c;
-        if (z < z_entry && z > z_exit) {
-          z_exit = z;
-          exit_plane = p;
-        }
-      }
-      float s_i;
-      if (stored >= z_exit) {  // the depth-buffer point is inside the wedge
-        s_i = intensityAt(w, sx, sy, stored);
+      // p_i is p itself exactly when p lies between the entry p_f and the exit p_b, that is on
+      // the inner side of every wedge plane. Deciding it from the plane values at p rather than
+      // from the depths of the intersection points makes the decision exact at shared side
+      // planes: the neighbour evaluates the same plane negated, so a point is inside exactly
+      // one of the two (comparing rounded intersection depths instead dropped or doubled the
+      // neighbour's contribution at points within a rounding error of the plane).
+      const float f = w.front.eval(sx, sy, stored), b = w.back.eval(sx, sy, stored);
+      const float l = w.left.eval(sx, sy, stored), r = w.right.eval(sx, sy, stored);
+      const bool inside = f >= 0.0f && b >= 0.0f && l >= 0.0f && r >= 0.0f;
+      // Entry intensity: 1 on the front plane, 0 on the back and side planes (section 5), where
+      // the rasterized face passes the depth test. Exits through the front plane (s_i = 1) are
+      // counted by the back-facing front face's own fragment (wedge_technique.cpp), the same
+      // snapped triangles, so a ray's entries and exits pair up exactly; a choice between the
+      // front plane and a side plane made from rounded intersection depths instead disagreed
+      // with the rasterized faces of the neighbouring wedge near their common edge and left
+      // +-255 streaks along it. Where the front rays cross (Figure 6) the front face is not the
+      // whole umbra quad, which is then counted as a hard quad instead: the entry counts 0.
+      const float z_face = row_depth + e.da * float(rx);
+      const float s_f = face == kFront && w.front_quad && z_face > stored ? 1.0f : 0.0f;
+      // Otherwise p_i = p_b, on the back plane or on a side plane (cancelled by the
+      // neighbour's entry, section 5): 0.
+      float s_i = 0.0f;
+      if (inside) {
+        s_i = screenIntensity(w.k, f, b, l, r);
+        if (w.smooth) s_i = smoothFalloff(s_i);
         ++counts.inside;
-      } else if (exit_plane == kFront) {
-        s_i = 1.0f;
-      } else if (exit_plane == kFar) {
-        s_i = intensityAt(w, sx, sy, z_exit);
-      } else {
-        s_i = 0.0f;  // back plane, or a side plane cancelled by the neighbour (section 5)
+      } else if (s_f == 0.0f) {
+        continue;
       }
       li_row[x] = liAdd(li_row[x], int32_t(std::nearbyint(li_scale * (s_i - s_f))));
       ++counts.writes;

@@ -28,7 +28,7 @@ bool penumbraCulled(CullMode mode, const ScreenWedge& w, const TileEdges& r, flo
   if (zmax <= 0.0f) return true;    // only background
   if (w.z_far > zmax) return true;  // the whole wedge lies in front of every stored point
   const double x0 = r.x0 + 0.5, x1 = r.x1 + 0.5, y0 = r.y0 + 0.5, y1 = r.y1 + 0.5;
-  for (const ScreenPlane* p : {&w.front, &w.back, &w.left, &w.right, &w.bottom})
+  for (const ScreenPlane* p : {&w.front, &w.back, &w.left, &w.right})
     if (boxOutside(*p, x0, x1, y0, y1, zmin, zmax)) return true;
   return false;
 }

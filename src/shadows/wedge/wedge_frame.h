@@ -29,8 +29,8 @@ struct WedgeRole {
   bool zfail = false;   // the caster's volume is counted from infinity (z-fail)
 };
 
-// Faces of a wedge polyhedron; kFar is the face at infinity of an unbounded wedge or the
-// bottom of a finite one (2002 paper, Figure 6).
+// Faces of a wedge polyhedron, the region inside its four planes; kFar is its face at infinity
+// when it is unbounded (wedge_frame.cpp).
 enum WedgeFace : int8_t { kFront = 0, kBack = 1, kLeft = 2, kRight = 3, kFar = 4 };
 
 struct WedgeFrame {
@@ -40,11 +40,14 @@ struct WedgeFrame {
   std::vector<ScreenWedge> screen; // same order
   uint64_t silhouette_edges = 0;
   uint64_t junction_vertices = 0;
+  // Wedges left out of the penumbra passes because their four planes bound no proper convex
+  // polyhedron (their umbra quads still count).
+  uint64_t degenerate_wedges = 0;
 };
 
 // Builds the frame for `light`. With a zero radius there are no wedge faces and the umbra
 // volume is the hard shadow volume exactly (same clip vertices, same triangles), so every wedge
-// variant then gives the hard-shadow image.
+// variant then gives the hard-shadow image (resolved by the hard rule, li_buffer.h).
 WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
                            const Light& light, const View& view);
 

@@ -35,8 +35,7 @@ void wedgeKernelScalar(const TileEdges& e, const WedgeKernelWork& work,
         const float sx = float(x) + 0.5f;
         const float f = w->front.eval(sx, sy, stored), b = w->back.eval(sx, sy, stored);
         const float l = w->left.eval(sx, sy, stored), r = w->right.eval(sx, sy, stored);
-        const float bottom = w->bottom.eval(sx, sy, stored);
-        if (f >= 0.0f && b >= 0.0f && l >= 0.0f && r >= 0.0f && bottom >= 0.0f) {
+        if (f >= 0.0f && b >= 0.0f && l >= 0.0f && r >= 0.0f) {
           float s = screenIntensity(w->k, f, b, l, r);
           if (w->smooth) s = smoothFalloff(s);
           value += int32_t(std::nearbyint(s * work.li_scale));

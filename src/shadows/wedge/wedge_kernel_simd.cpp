@@ -1,5 +1,5 @@
 // SIMD twin of wedge_kernel_scalar.cpp (Highway, dispatched at run time): the triangle
-// coverage, the umbra depth test, the five plane evaluations and equation (3) run 4 to 16
+// coverage, the umbra depth test, the four plane evaluations and equation (3) run 4 to 16
 // pixels at a time with the same float operations in the same order; the few pixels that
 // receive a contribution are then added to the 16-bit LI buffer one by one, as in the twin.
 #include <algorithm>
@@ -79,12 +79,10 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
         const auto b = planeAt(df, w->back, sx, sy, stored);
         const auto l = planeAt(df, w->left, sx, sy, stored);
         const auto r = planeAt(df, w->right, sx, sy, stored);
-        const auto bottom = planeAt(df, w->bottom, sx, sy, stored);
         auto in = hn::And(surface, hn::Ge(f, zero));
         in = hn::And(in, hn::Ge(b, zero));
         in = hn::And(in, hn::Ge(l, zero));
         in = hn::And(in, hn::Ge(r, zero));
-        in = hn::And(in, hn::Ge(bottom, zero));
         if (!hn::AllFalse(df, in)) {
           counts.inside += hn::CountTrue(df, in);
           // screenIntensity (wedge_screen.h), operation for operation.

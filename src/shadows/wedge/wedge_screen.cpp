@@ -31,40 +31,27 @@ bool depthOf(const View& view, const dvec4& p, float& depth) {
 
 }  // namespace
 
-ScreenWedge toScreenWedge(const Wedge& wedge, const View& view, bool smooth) {
+ScreenWedge toScreenWedge(const Wedge& wedge, const std::vector<dvec4>& corners,
+                          const View& view, bool smooth) {
   ScreenWedge s;
   s.front = toScreenPlane(wedge.front, view);
   s.back = toScreenPlane(wedge.back, view);
   s.left = toScreenPlane(wedge.left, view);
   s.right = toScreenPlane(wedge.right, view);
-  if (wedge.finite) s.bottom = toScreenPlane(wedge.bottom, view);
   const WedgeIntensityConstants k = wedgeIntensityConstants(wedge);
   s.k = {float(k.front_left), float(k.back_left), float(k.front_right), float(k.back_right),
          float(k.left), float(k.right)};
   s.smooth = smooth;
-  // Depth range over the wedge's vertices: the edge, then the far corners or the directions.
   float z_near = 0.0f, z_far = 1.0f;
-  bool all_in_front = true;
-  auto add = [&](const dvec4& p) {
+  bool all_in_front = !corners.empty();
+  for (const dvec4& p : corners) {
     float z;
     if (!depthOf(view, p, z)) {
       all_in_front = false;
-      return;
+      break;
     }
     z_near = std::max(z_near, z);
     z_far = std::min(z_far, z);
-  };
-  add(dvec4(wedge.a, 1.0));
-  add(dvec4(wedge.b, 1.0));
-  if (wedge.finite) {
-    for (const dvec3& c : {wedge.far_front_left, wedge.far_front_right, wedge.far_back_left,
-                           wedge.far_back_right})
-      add(dvec4(c, 1.0));
-  } else {
-    for (const dvec3& d : {wedge.ray_front_left, wedge.ray_front_right, wedge.ray_back_left,
-                           wedge.ray_back_right})
-      add(dvec4(d, 0.0));
-    z_far = 0.0f;
   }
   // The float depth buffer and the plane evaluation round: widen the range by a few ulps.
   s.z_near = all_in_front ? z_near * (1.0f + 1e-5f) : 2.0f;

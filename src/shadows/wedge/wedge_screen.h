@@ -3,6 +3,7 @@
 // the wedge" with screen-space plane equations set up once per wedge (2004 paper, section 3),
 // and culls tiles against the same planes (section 4).
 #include <cstdint>
+#include <vector>
 
 #include "core/view.h"
 #include "shadows/wedge/wedge.h"
@@ -28,17 +29,26 @@ struct ScreenIntensity {
   float front_left, back_left, front_right, back_right, left, right;
 };
 
+// The wedge is the region inside its four planes (wedge_frame.cpp); the Figure 6 bottom plane of
+// the wedge builder is not used.
 struct ScreenWedge {
-  ScreenPlane front, back, left, right, bottom;  // bottom: the Figure 6 cut, or always inside
+  ScreenPlane front, back, left, right;
   ScreenIntensity k;
-  bool smooth = false;   // Falloff::Smooth
+  bool smooth = false;      // Falloff::Smooth
+  // The front face is exactly the unit edge's umbra quad (its front rays do not cross), so the
+  // frame draws that quad once for both (single-pass, section 6.2; the 2002 entry values).
+  bool front_quad = false;
   // Reversed-Z depth range the wedge can occupy on screen: z_near >= depth of every wedge
   // point in front of the eye, z_far <= it (0 when the wedge reaches infinity). For the
   // z-range quick reject of section 4.
   float z_near = 1.0f, z_far = 0.0f;
 };
 
-ScreenWedge toScreenWedge(const Wedge& wedge, const View& view, bool smooth);
+// `corners`: the wedge polyhedron's vertices, homogeneous (w = 0: directions to infinity); the
+// depth range is theirs, since depth over a convex polyhedron in front of the eye is extreme at
+// its vertices (depth is a ratio of affine functions).
+ScreenWedge toScreenWedge(const Wedge& wedge, const std::vector<dvec4>& corners,
+                          const View& view, bool smooth);
 
 // Light intensity in [0, 1] from the four plane values of a point inside the wedge; the float
 // formula the kernels evaluate (same operations, same order as the SIMD twin).

@@ -23,6 +23,7 @@
 #include "raster/cull_tiles.h"
 #include "raster/rasterizer.h"
 #include "shadows/facing_away.h"
+#include "shadows/facing_away.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
 #include "shadows/wedge/wedge_culling.h"
@@ -245,6 +246,11 @@ TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene
     PassTimer timer(result.stats, "resolve");
     result.visibility =
         liToVisibility(wedges.li, eye.depth.depth, wedges.full, !(light.radius > 0.0f));
+    // As the hard shadow volume (shadow_volume.cpp) and the oracle: a point whose triangle
+    // faces away from the whole light gets none of it, whatever the wedges near the terminator
+    // say (their silhouette is the centre's for the whole light, 2002 paper, section 8). With a
+    // zero radius this keeps the image the hard volume's exactly.
+    shadowFacingAway(scene, light, view, eye, result.visibility);
   }
   return result;
 }

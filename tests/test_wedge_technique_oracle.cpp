@@ -1,0 +1,281 @@
+// Penumbra wedge techniques against the ray-traced oracle (TechniqueKind::Reference, fixed
+// seed): mean absolute visibility error over the covered pixels and over the oracle's penumbra
+// (0 < v < 1), the eye inside a shadow or inside a wedge (z-fail, 2004 paper, section 5), and
+// every shared model scene without light leaks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/eye_pass.h"
+#include "scene/builtin_scenes.h"
+#include "scene/generators.h"
+#include "scene/scene_file.h"
+#include "shadows/technique.h"
+#include "shadows/wedge/li_buffer.h"
+#include "shadows/wedge/wedge.h"
+#include "shadows/wedge/wedge_frame.h"
+#include "shadow_test_util.h"
+
+namespace penumbra {
+namespace {
+
+constexpr TechniqueKind kWedgeKinds[] = {TechniqueKind::Wedge2002, TechniqueKind::WedgeThreePass,
+                                         TechniqueKind::WedgeSinglePass};
+
+// The acceptance bounds (the issue): over covered pixels, and over the oracle's penumbra.
+constexpr double kMaxMaeCovered = 0.03;
+constexpr double kMaxMaePenumbra = 0.10;
+
+struct Frame {
+  Scene scene;
+  View view;
+  EyeBuffers eye;
+  TechniqueResult oracle;
+};
+
+Frame makeFrame(Scene scene, int width, int height, int rays) {
+  Frame f;
+  f.scene = std::move(scene);
+  f.view = f.scene.camera.makeView(width, height);
+  Stats stats;
+  f.eye = renderEyePass(f.scene, f.view, stats);
+  TechniqueOptions o;
+  o.kind = TechniqueKind::Reference;
+  o.rays = rays;
+  o.seed = 1;
+  f.oracle = renderShadows(o, f.scene, f.scene.lights.at(0), f.view, f.eye);
+  return f;
+}
+
+struct OracleError {
+  double covered = 0;   // MAE over covered pixels
+  double penumbra = 0;  // MAE over the oracle's penumbra pixels
+  size_t penumbra_pixels = 0;
+  double leak_fraction = 0;  // covered pixels more than 0.5 brighter than the oracle
+  size_t largest_leak = 0;   // pixels in the largest 4-connected group of those
+};
+
+OracleError measure(const Frame& f, const Image<float>& v) {
+  const Image<float>& oracle = f.oracle.visibility;
+  const int w = v.width(), h = v.height();
+  double sum = 0, sum_penumbra = 0;
+  size_t covered = 0, leaks = 0;
+  OracleError e;
+  Image<uint8_t> leak(w, h, 0);
+  for (size_t i = 0; i < v.size(); ++i) {
+    if (!(f.eye.depth.depth[i] > 0.0f)) continue;
+    const double d = double(v[i]) - double(oracle[i]);
+    sum += std::fabs(d);
+    ++covered;
+    if (d > 0.5) {
+      leak[i] = 1;
+      ++leaks;
+    }
+    if (oracle[i] > 0.0f && oracle[i] < 1.0f) {
+      sum_penumbra += std::fabs(d);
+      ++e.penumbra_pixels;
+    }
+  }
+  e.covered = covered ? sum / double(covered) : 0.0;
+  e.penumbra = e.penumbra_pixels ? sum_penumbra / double(e.penumbra_pixels) : 0.0;
+  e.leak_fraction = covered ? double(leaks) / double(covered) : 0.0;
+  // Largest group of leaking pixels: a missing volume or wedge leaks light over a region;
+  // rounding along a boundary or a thin wedge seam only over scattered pixels and lines.
+  std::vector<int> stack;
+  for (int start = 0; start < w * h; ++start) {
+    if (leak[size_t(start)] != 1) continue;
+    size_t size = 0;
+    stack.assign(1, start);
+    leak[size_t(start)] = 2;
+    while (!stack.empty()) {
+      const int p = stack.back();
+      stack.pop_back();
+      ++size;
+      const int x = p % w, y = p / w;
+      const int next[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+      for (const auto& n : next) {
+        if (n[0] < 0 || n[1] < 0 || n[0] >= w || n[1] >= h) continue;
+        const size_t q = size_t(n[1]) * size_t(w) + size_t(n[0]);
+        if (leak[q] != 1) continue;
+        leak[q] = 2;
+        stack.push_back(int(q));
+      }
+    }
+    e.largest_leak = std::max(e.largest_leak, size);
+  }
+  return e;
+}
+
+TechniqueResult render(const Frame& f, TechniqueKind kind, VolumeMode mode = VolumeMode::Auto) {
+  TechniqueOptions o;
+  o.kind = kind;
+  o.volume_mode = mode;
+  return renderShadows(o, f.scene, f.scene.lights.at(0), f.view, f.eye);
+}
+
+void report(const std::string& scene, const std::string& what, const OracleError& e) {
+  std::printf("[ wedges   ] %-22s %-16s MAE covered %.4f  penumbra %.4f (%zu px)  leaks %.3f%% "
+              "(largest %zu px)\n",
+              scene.c_str(), what.c_str(), e.covered, e.penumbra, e.penumbra_pixels,
+              100.0 * e.leak_fraction, e.largest_leak);
+  ::testing::Test::RecordProperty(scene + "_" + what + "_mae_covered", std::to_string(e.covered));
+  ::testing::Test::RecordProperty(scene + "_" + what + "_mae_penumbra", std::to_string(e.penumbra));
+}
+
+// The paper scenes and a real mesh at 320 x 214 against 1024 oracle rays per pixel (its noise
+// adds about 0.01 to the penumbra error): every variant within the acceptance bounds, and far
+// better than hard shadows in the penumbra, which shows the penumbra is really there.
+TEST(WedgeOracle, PaperScenesAndBunnyWithinBounds) {
+  std::vector<std::string> names = {"spheres", "columns"};
+  if (testing::sharedModel("bunny-lowres.obj").empty()) {
+    std::printf("[ SKIPPED  ] bunny-lowres: shared models not found in %s\n",
+                modelsDirectory().c_str());
+  } else {
+    names.push_back(std::string(PENUMBRA_SOURCE_DIR) + "/scenes/bunny-lowres.json");
+  }
+  for (const std::string& name : names) {
+    const Frame f = makeFrame(loadScene(name), 320, 214, 1024);
+    const std::string scene = f.scene.name.empty() ? name : f.scene.name;
+    const OracleError hard = measure(f, render(f, TechniqueKind::ShadowVolume).visibility);
+    report(scene, "volume (hard)", hard);
+    for (TechniqueKind kind : kWedgeKinds) {
+      const OracleError e = measure(f, render(f, kind).visibility);
+      report(scene, techniqueName(kind), e);
+      EXPECT_LE(e.covered, kMaxMaeCovered) << scene << " " << techniqueName(kind);
+      EXPECT_LE(e.penumbra, kMaxMaePenumbra) << scene << " " << techniqueName(kind);
+      EXPECT_LT(e.penumbra, 0.5 * hard.penumbra) << scene << " " << techniqueName(kind);
+    }
+  }
+}
+
+// A table top (a closed slab) over the ground under a large light: a wide umbra under it, a
+// penumbra band around it. The eye is placed under the table (inside the umbra volume), in the
+// penumbra band (inside a wedge: none of its faces is front-facing), and outside everything.
+Scene tableScene(vec3 eye, vec3 target) {
+  Scene s;
+  s.name = "table";
+  s.materials.push_back(Material{});
+  s.meshes.push_back(makeGroundPlane(vec3(0.0f), 20.0f));
+  s.meshes.push_back(makeBox(vec3(-2.0f, 1.5f, -2.0f), vec3(2.0f, 1.8f, 2.0f)));
+  s.lights.push_back(Light{vec3(0.0f, 10.0f, 0.0f), 1.5f, vec3(1.0f), 1.0f});
+  s.camera.position = eye;
+  s.camera.target = target;
+  s.camera.fov_y = 70.0f;
+  s.camera.near_plane = 0.05f;
+  s.finalize();
+  return s;
+}
+
+// 2004 paper, section 5: with the eye inside a shadow region, counting from the eye (z-pass)
+// starts wrong, and z-fail with capped volumes and the back-facing wedge faces must be used.
+// Auto must pick z-fail (its LI buffer is the forced z-fail one), match the oracle as well as
+// with the eye outside, and forced z-pass must visibly fail (which shows the test can catch a
+// wrong choice). The 2002 algorithm counts from the eye only (2002 paper, section 8) and is not
+// run here. 256 oracle rays (noise about 0.02 in the penumbra) keep this test fast.
+TEST(WedgeOracle, EyeInsideShadowOrWedgeUsesZFail) {
+  struct Case {
+    const char* what;
+    vec3 eye, target;
+    bool inside;     // the eye is inside the umbra volume or a wedge
+    bool in_wedge;   // the eye is inside a wedge
+  };
+  // Penumbra band at the eye's height 0.8 beside the x = 2 edge: x in [2.06, 2.43] (edge at
+  // y = 1.8, light radius 1.5 at height 10); the hard boundary from the centre is x = 2.24.
+  const Case cases[] = {
+      {"eye outside", vec3(7.0f, 4.0f, 7.0f), vec3(0.0f, 0.5f, 0.0f), false, false},
+      {"eye in umbra", vec3(0.3f, 0.7f, 0.2f), vec3(4.0f, 0.0f, 3.0f), true, false},
+      {"eye in wedge", vec3(2.24f, 0.8f, 0.0f), vec3(-1.0f, 0.0f, 4.0f), true, true}};
+  for (const Case& c : cases) {
+    const Frame f = makeFrame(tableScene(c.eye, c.target), 240, 160, 256);
+    const WedgeFrame wedges =
+        buildWedgeFrame(TechniqueOptions{}, f.scene, f.scene.lights[0], f.view);
+    bool eye_in_wedge = false;
+    for (const Wedge& w : wedges.wedges) {
+      const dvec3 e(c.eye);  // the wedge is the region inside its four planes (wedge_frame.cpp)
+      eye_in_wedge = eye_in_wedge || (w.front.eval(e) >= 0.0 && w.back.eval(e) >= 0.0 &&
+                                      w.left.eval(e) >= 0.0 && w.right.eval(e) >= 0.0);
+    }
+    EXPECT_EQ(eye_in_wedge, c.in_wedge) << c.what;
+    size_t umbra = 0, lit = 0, penumbra = 0;
+    for (size_t i = 0; i < f.oracle.visibility.size(); ++i) {
+      if (!(f.eye.depth.depth[i] > 0.0f)) continue;
+      const float v = f.oracle.visibility[i];
+      umbra += v == 0.0f;
+      lit += v == 1.0f;
+      penumbra += v > 0.0f && v < 1.0f;
+    }
+    EXPECT_GT(umbra, 500u) << c.what;
+    EXPECT_GT(lit, 500u) << c.what;
+    EXPECT_GT(penumbra, 500u) << c.what;
+    for (TechniqueKind kind : {TechniqueKind::WedgeThreePass, TechniqueKind::WedgeSinglePass}) {
+      const std::string what = std::string(c.what) + " " + techniqueName(kind);
+      TechniqueOptions o;
+      o.kind = kind;
+      const Light& light = f.scene.lights[0];
+      const WedgeLi automatic = renderWedgeLi(o, f.scene, light, f.view, f.eye);
+      o.volume_mode = VolumeMode::ZFail;
+      const WedgeLi zfail = renderWedgeLi(o, f.scene, light, f.view, f.eye);
+      if (c.inside) {
+        EXPECT_TRUE(automatic.li == zfail.li) << what << ": auto did not pick z-fail";
+      }
+      const OracleError e = measure(f, render(f, kind).visibility);
+      report("table", what, e);
+      EXPECT_LE(e.covered, kMaxMaeCovered) << what;
+      EXPECT_LE(e.penumbra, kMaxMaePenumbra) << what;
+      const OracleError zpass = measure(f, render(f, kind, VolumeMode::ZPass).visibility);
+      report("table", what + " z-pass", zpass);
+      if (c.inside) {
+        EXPECT_GT(zpass.covered, 10.0 * kMaxMaeCovered) << what << ": z-pass should fail";
+      } else {
+        EXPECT_LE(zpass.covered, kMaxMaeCovered) << what;
+      }
+    }
+  }
+}
+
+// Every mesh of ../shared/models in its scene file, open and non-manifold ones included, with
+// every variant (the 2002 one where the eye is outside every volume: it counts from the eye
+// only), against 64 oracle rays at 240 x 160. No crash, and no light leaks: a missing wedge or
+// volume face lets light through over a region (z-pass with the eye in the table's umbra, above:
+// 59 % of the pixels, the largest group 14013 pixels), so the largest 4-connected group of
+// pixels more than 0.5 brighter than the oracle must stay small, and so must their fraction.
+// Measured: largest group 9 pixels and 0.40 % on the armadillo, whose thousands of tiny
+// overlapping wedges streak; at most 4 pixels and 0.08 % elsewhere. Bounds: 40 pixels, 0.8 %.
+// The covered-pixel error is bounded too (measured at most 0.019); the penumbra error is only
+// reported: on dense and open meshes it is as large as hard shadows' (overlapping wedges, 2002
+// paper section 8; two-sided open meshes, see wedge_frame.cpp).
+TEST(WedgeOracle, SharedModelScenesRenderWithoutLightLeaks) {
+  const std::filesystem::path dir = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
+  if (testing::sharedModel("bunny-lowres.obj").empty())
+    GTEST_SKIP() << "shared models not found in " << modelsDirectory();
+  constexpr double kMaxCovered = 0.03;
+  constexpr double kMaxLeakFraction = 0.008;
+  constexpr size_t kMaxLeakGroup = 40;
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  EXPECT_GE(files.size(), 13u);
+  for (const std::filesystem::path& file : files) {
+    const Frame f = makeFrame(loadSceneFile(file.string()), 240, 160, 64);
+    const std::string scene = file.stem().string();
+    const bool eye_outside =
+        render(f, TechniqueKind::WedgeThreePass).visibility ==
+        render(f, TechniqueKind::WedgeThreePass, VolumeMode::ZPass).visibility;
+    for (TechniqueKind kind : kWedgeKinds) {
+      if (kind == TechniqueKind::Wedge2002 && !eye_outside) continue;
+      const OracleError e = measure(f, render(f, kind).visibility);
+      report(scene, techniqueName(kind), e);
+      EXPECT_LE(e.covered, kMaxCovered) << scene << " " << techniqueName(kind);
+      EXPECT_LE(e.leak_fraction, kMaxLeakFraction) << scene << " " << techniqueName(kind);
+      EXPECT_LE(e.largest_leak, kMaxLeakGroup) << scene << " " << techniqueName(kind);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace penumbra
