@@ -18,12 +18,6 @@ struct OracleComparison {
   EyeBuffers eye;
 };
 
-inline Image<uint8_t> coveredMask(const EyeBuffers& eye) {
-  Image<uint8_t> mask(eye.depth.width(), eye.depth.height(), 0);
-  for (size_t i = 0; i < mask.size(); ++i) mask[i] = eye.depth.depth[i] > 0.0f;
-  return mask;
-}
-
 inline OracleComparison compareHardWithOracle(const Scene& scene, const View& view,
                                               TechniqueOptions options, size_t light_index = 0) {
   OracleComparison c;

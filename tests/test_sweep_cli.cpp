@@ -2,15 +2,13 @@
 // test environment sets PENUMBRA_CLI to the built binary; without it these skip.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "cli_test_util.h"
 #include "render/image_io.h"
 
 namespace penumbra {
@@ -18,43 +16,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::slurp;
 
-class SweepCli : public ::testing::Test {
+// run(...) returns the exit code; stdout and stderr of the last run are in out_ and err_.
+class SweepCli : public testing::CliTest {
  protected:
-  void SetUp() override {
-    const char* cli = std::getenv("PENUMBRA_CLI");
-    if (!cli || !*cli) GTEST_SKIP() << "PENUMBRA_CLI is not set (run through ctest)";
-    cli_ = cli;
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) /
-           fmt::format("penumbra_sweep_cli_{}_{}", info->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    if (!dir_.empty()) fs::remove_all(dir_);
-  }
-
-  // Exit code; stdout and stderr into out_ and err_.
   int run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = fmt::format("cd '{}' && '{}' {} >'{}' 2>'{}'", dir_.string(), cli_,
-                                            args, out.string(), err.string());
-    const int status = std::system(command.c_str());
-    out_ = slurp(out);
-    err_ = slurp(err);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const testing::CliRun r = CliTest::run(args);
+    out_ = r.out;
+    err_ = r.err;
+    return r.exit_code;
   }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string cli_, out_, err_;
-  fs::path dir_;
+  std::string out_, err_;
 };
 
 TEST_F(SweepCli, BenchWritesCsvAndSummary) {

@@ -21,6 +21,7 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "raster/cull_tiles.h"
+#include "raster/fixed_point.h"
 #include "raster/rasterizer.h"
 #include "shadows/facing_away.h"
 #include "shadows/facing_away.h"
@@ -37,6 +38,13 @@ struct TileWork {
   WedgeKernelCounts umbra, penumbra;
   uint64_t tested = 0, culled = 0;
 };
+
+// One counter set per bin tile (forEachTriangleInTiles hands out bin tile indices), summed in
+// tile order so counts do not depend on the thread count.
+size_t binTileCount(int width, int height) {
+  return size_t((width + kBinTileSize - 1) / kBinTileSize) *
+         size_t((height + kBinTileSize - 1) / kBinTileSize);
+}
 
 void addTileWork(const std::vector<TileWork>& tiles, Stats& stats) {
   for (const TileWork& t : tiles) {
@@ -93,7 +101,7 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
   const int width = li.width(), height = li.height();
   const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
   const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
-  std::vector<TileWork> work((size_t(width) + 31) / 32 * ((size_t(height) + 31) / 32));
+  std::vector<TileWork> work(binTileCount(width, height));
   forEachTriangleInTiles(
       frame.triangles, width, height,
       [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
@@ -122,7 +130,7 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
   const int width = li.width(), height = li.height();
   const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
   const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
-  std::vector<TileWork> work((size_t(width) + 31) / 32 * ((size_t(height) + 31) / 32));
+  std::vector<TileWork> work(binTileCount(width, height));
   forEachTriangleInTiles(
       frame.triangles, width, height,
       [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
@@ -159,7 +167,7 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   const int width = li.width(), height = li.height();
   const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
-  std::vector<TileWork> work((size_t(width) + 31) / 32 * ((size_t(height) + 31) / 32));
+  std::vector<TileWork> work(binTileCount(width, height));
   forEachTriangleInTiles(
       frame.triangles, width, height,
       [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
