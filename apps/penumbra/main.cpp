@@ -7,27 +7,13 @@
 #include <string>
 #include <vector>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "core/memory.h"
 
 namespace {
 
-// Every frame allocates and frees full-size buffers (depth, primitive ids, stencil, visibility,
-// colour, set-up triangles: ~30 MB at 1920x1080). By default glibc serves blocks over 128 KiB
-// with mmap and gives freed heap tops back to the kernel, so each frame page-faulted all of it
-// in again (14 % of a 1920x1080 frame, bench/README.md). Blocks up to 32 MiB (the most mallopt
-// accepts) now come from the heap, which is never trimmed: freed buffers are reused as they are.
-void keepFrameBuffersMapped() {
-#if defined(__GLIBC__)
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-#endif
-}
 
 int reportError(const std::string& message) {
   std::fflush(stdout);
@@ -72,7 +58,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  keepFrameBuffersMapped();
+  penumbra::keepFrameBuffersMapped();
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {
