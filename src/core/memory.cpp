@@ -1,5 +1,9 @@
 #include "core/memory.h"
 
+// Any libc header defines __GLIBC__; without one the test below is always false and the policy
+// silently does nothing (it did, until the page faults showed up in a profile).
+#include <cstdlib>
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif

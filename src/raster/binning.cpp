@@ -1,31 +1,77 @@
 #include "raster/binning.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "raster/fixed_point.h"
 
 namespace penumbra {
+namespace {
 
-// Two sequential passes (count, then fill) over the triangles' tile boxes: it is linear in the
-// number of (triangle, tile) pairs and keeps each tile's list in triangle order, which makes
-// depth ties resolve the same way for any thread count.
+// The bin tiles of row `ty` that may hold a pixel of `t`: those where every edge function is
+// non-negative somewhere in the tile (setupTileEdges' test, which runs again per pair). For
+// each edge that set is a half-line of tiles, so the row's set is one interval. Shadow volume
+// quads and wedge faces are long and slanted: their bounding boxes hold ten times more tiles
+// than they touch (columns, 1920x1080: 1.74M box pairs, 0.16M touched).
+//
+// The bounds are solved in double and rounded outwards, so the interval is a superset of the
+// exact one (an extra tile is rejected later by setupTileEdges; a missing one would lose
+// pixels). Edge values reach 2^38 in 28.4 units, far within double's exact integers.
+bool tileRowSpan(const SetupTriangle& t, int ty, int& cx0, int& cx1) {
+  const int ya = std::max(t.min_y, ty * kBinTileSize);
+  const int yb = std::min(t.max_y, ty * kBinTileSize + kBinTileSize - 1);
+  double lo = t.min_x >> kBinTileLevel, hi = t.max_x >> kBinTileLevel;
+  for (int i = 0; i < 3; ++i) {
+    const int64_t A = t.A[i], B = t.B[i];
+    // The edge's largest value over the row band, without its x term.
+    const int64_t k = std::max(B * pixelCentre(ya), B * pixelCentre(yb)) + t.C[i];
+    if (A == 0) {
+      if (k < 0) return false;
+      continue;
+    }
+    // A > 0: largest at the tile's last column, A (512 tx + 16 * 31 + 8) + k >= 0.
+    // A < 0: largest at its first column,        A (512 tx + 8) + k >= 0.
+    const double x = -double(k) / double(A);  // edge = 0 at this 28.4 coordinate
+    constexpr double kTileUnits = double(kBinTileSize * kSubpixelSteps);
+    if (A > 0)
+      lo = std::max(lo, std::floor((x - pixelCentre(kBinTileSize - 1)) / kTileUnits));
+    else
+      hi = std::min(hi, std::ceil((x - pixelCentre(0)) / kTileUnits));
+  }
+  if (!(lo <= hi)) return false;
+  cx0 = int(lo);
+  cx1 = int(hi);
+  return true;
+}
+
+template <class Fn>
+void forEachTileOf(const SetupTriangle& t, Fn&& fn) {
+  for (int ty = t.min_y >> kBinTileLevel; ty <= (t.max_y >> kBinTileLevel); ++ty) {
+    int cx0, cx1;
+    if (!tileRowSpan(t, ty, cx0, cx1)) continue;
+    for (int tx = cx0; tx <= cx1; ++tx) fn(ty, tx);
+  }
+}
+
+}  // namespace
+
+// Two sequential passes (count, then fill) over each triangle's tiles: linear in the number of
+// (triangle, tile) pairs, and each tile's list stays in triangle order, which makes depth ties
+// resolve the same way for any thread count.
 TileBins binTriangles(const std::vector<SetupTriangle>& triangles, int width, int height) {
   TileBins bins;
   bins.tiles_x = (width + kBinTileSize - 1) / kBinTileSize;
   bins.tiles_y = (height + kBinTileSize - 1) / kBinTileSize;
   bins.offsets.assign(bins.tileCount() + 1, 0);
-  for (const SetupTriangle& t : triangles) {
-    for (int ty = t.min_y >> kBinTileLevel; ty <= (t.max_y >> kBinTileLevel); ++ty)
-      for (int tx = t.min_x >> kBinTileLevel; tx <= (t.max_x >> kBinTileLevel); ++tx)
-        ++bins.offsets[size_t(ty) * bins.tiles_x + tx + 1];
-  }
+  for (const SetupTriangle& t : triangles)
+    forEachTileOf(t, [&](int ty, int tx) { ++bins.offsets[size_t(ty) * bins.tiles_x + tx + 1]; });
   for (size_t i = 1; i < bins.offsets.size(); ++i) bins.offsets[i] += bins.offsets[i - 1];
   bins.triangles.resize(bins.offsets.back());
   std::vector<uint32_t> cursor(bins.offsets.begin(), bins.offsets.end() - 1);
-  for (uint32_t i = 0; i < triangles.size(); ++i) {
-    const SetupTriangle& t = triangles[i];
-    for (int ty = t.min_y >> kBinTileLevel; ty <= (t.max_y >> kBinTileLevel); ++ty)
-      for (int tx = t.min_x >> kBinTileLevel; tx <= (t.max_x >> kBinTileLevel); ++tx)
-        bins.triangles[cursor[size_t(ty) * bins.tiles_x + tx]++] = i;
-  }
+  for (uint32_t i = 0; i < triangles.size(); ++i)
+    forEachTileOf(triangles[i], [&](int ty, int tx) {
+      bins.triangles[cursor[size_t(ty) * bins.tiles_x + tx]++] = i;
+    });
   return bins;
 }
 

@@ -1,0 +1,40 @@
+// The allocator policy for frame buffers (core/memory.h): full-size buffers come from the heap
+// and stay mapped after they are freed, so the next frame reuses them without page faults.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <vector>
+
+#include "core/memory.h"
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+namespace penumbra {
+namespace {
+
+TEST(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
+#if !defined(__GLIBC__)
+  GTEST_SKIP() << "the policy only acts on glibc's malloc";
+#elif defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer replaces malloc: mallopt and mallinfo2 do not apply";
+#else
+  keepFrameBuffersMapped();
+  constexpr size_t kBytes = size_t(1920) * 1080 * 4;  // one 1080p depth buffer
+  const struct mallinfo2 before = mallinfo2();
+  {
+    std::vector<float> buffer(kBytes / sizeof(float), 1.0f);
+    const struct mallinfo2 during = mallinfo2();
+    // If it failed: the buffer was mmapped, and every frame would page-fault it in again (the
+    // policy once compiled to nothing, and 1080p frames spent 15 % of their time in the kernel).
+    EXPECT_EQ(during.hblkhd, before.hblkhd) << "an 8 MB buffer was mmapped, not taken from the heap";
+    EXPECT_GE(during.arena, kBytes);
+  }
+  // If it failed: freeing the buffer gave the heap top back to the kernel.
+  EXPECT_GE(mallinfo2().arena, kBytes) << "the freed buffer was trimmed from the heap";
+#endif
+}
+
+}  // namespace
+}  // namespace penumbra
