@@ -103,14 +103,17 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
       const bool zfail = (t.flags & kZFail) != 0;
       const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
       const DepthRule rule = zfail ? DepthRule::NotCloser : DepthRule::Closer;
-      forEachCullTile(e, ranges, [&](const TileEdges& sub, float zmin, float zmax) {
-        ++c.tested;
-        if (options.tile_culling && depthRuleCulled(t, sub, zfail, zmin, zmax)) {
-          ++c.culled;
-          return;
-        }
-        stencilKernel(sub, contribution, rule, target, c.kernel, options.simd);
-      });
+      forEachCullRect(
+          e, ranges,
+          [&](const TileEdges& sub, float zmin, float zmax) {
+            ++c.tested;
+            const bool culled = options.tile_culling && depthRuleCulled(t, sub, zfail, zmin, zmax);
+            c.culled += culled;
+            return culled ? 0 : 1;
+          },
+          [&](const TileEdges& rect, int) {
+            stencilKernel(rect, contribution, rule, target, c.kernel, options.simd);
+          });
     }
   });
   sumInto(counts, stats, true);

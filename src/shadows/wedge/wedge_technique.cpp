@@ -24,7 +24,6 @@
 #include "raster/fixed_point.h"
 #include "raster/rasterizer.h"
 #include "shadows/facing_away.h"
-#include "shadows/facing_away.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
 #include "shadows/wedge/wedge_culling.h"
@@ -109,17 +108,20 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
         if (!penumbraFace(role, t)) return;
         const ScreenWedge& wedge = frame.screen[size_t(role.wedge)];
         TileWork& tw = work[v.tile];
-        forEachCullTile(e, ranges, [&](const TileEdges& sub, float zmin, float zmax) {
-          ++tw.tested;
-          if (penumbraCulled(options.cull, wedge, sub, zmin, zmax)) {
-            ++tw.culled;
-            return;
-          }
-          WedgeKernelWork k;
-          k.wedge = &wedge;
-          k.li_scale = float(full);
-          wedgeKernel(sub, k, target, tw.penumbra, options.simd);
-        });
+        WedgeKernelWork k;
+        k.wedge = &wedge;
+        k.li_scale = float(full);
+        forEachCullRect(
+            e, ranges,
+            [&](const TileEdges& sub, float zmin, float zmax) {
+              ++tw.tested;
+              const bool culled = penumbraCulled(options.cull, wedge, sub, zmin, zmax);
+              tw.culled += culled;
+              return culled ? 0 : 1;
+            },
+            [&](const TileEdges& rect, int) {
+              wedgeKernel(rect, k, target, tw.penumbra, options.simd);
+            });
       },
       stats);
   addTileWork(work, stats);
@@ -139,25 +141,35 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
         if (role.umbra_weight == 0 && !has_penumbra) return;
         const ScreenWedge* wedge = has_penumbra ? &frame.screen[size_t(role.wedge)] : nullptr;
         TileWork& tw = work[v.tile];
-        forEachCullTile(e, ranges, [&](const TileEdges& sub, float zmin, float zmax) {
-          ++tw.tested;
-          WedgeKernelWork k;
-          k.li_scale = float(full);
-          if (role.umbra_weight != 0 &&
-              !(options.cull != CullMode::None && depthRuleCulled(t, sub, role.zfail, zmin, zmax))) {
-            k.umbra_value = umbraValue(role, t, full);
-            k.rule = role.zfail ? DepthRule::NotCloser : DepthRule::Closer;
-          }
-          if (wedge != nullptr && !penumbraCulled(options.cull, *wedge, sub, zmin, zmax))
-            k.wedge = wedge;
-          if (k.umbra_value == 0 && k.wedge == nullptr) {
-            ++tw.culled;
-            return;
-          }
-          // One depth read per pixel for both parts: count it under the penumbra when that
-          // part runs, else under the umbra.
-          wedgeKernel(sub, k, target, k.wedge != nullptr ? tw.penumbra : tw.umbra, options.simd);
-        });
+        // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra.
+        constexpr int kUmbra = 1, kPenumbra = 2;
+        forEachCullRect(
+            e, ranges,
+            [&](const TileEdges& sub, float zmin, float zmax) {
+              ++tw.tested;
+              int parts = 0;
+              if (role.umbra_weight != 0 &&
+                  !(options.cull != CullMode::None &&
+                    depthRuleCulled(t, sub, role.zfail, zmin, zmax)))
+                parts |= kUmbra;
+              if (wedge != nullptr && !penumbraCulled(options.cull, *wedge, sub, zmin, zmax))
+                parts |= kPenumbra;
+              tw.culled += parts == 0;
+              return parts;
+            },
+            [&](const TileEdges& rect, int parts) {
+              WedgeKernelWork k;
+              k.li_scale = float(full);
+              if (parts & kUmbra) {
+                k.umbra_value = umbraValue(role, t, full);
+                k.rule = role.zfail ? DepthRule::NotCloser : DepthRule::Closer;
+              }
+              if (parts & kPenumbra) k.wedge = wedge;
+              // One depth read per pixel for both parts: count it under the penumbra when
+              // that part runs, else under the umbra.
+              wedgeKernel(rect, k, target, k.wedge != nullptr ? tw.penumbra : tw.umbra,
+                          options.simd);
+            });
       },
       stats);
   addTileWork(work, stats);
