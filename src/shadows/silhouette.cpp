@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "core/parallel.h"
 
@@ -30,7 +31,32 @@ RayHit crossRay(const dvec3& o, const dvec3& d, const dvec3& a, const dvec3& b, 
   return RayHit::Hit;
 }
 
+// Signed solid angle of triangle (a, b, c) seen from the origin (Van Oosterom and Strackee
+// 1983), positive when the triangle is seen from its back (det(a, b, c) > 0).
+double solidAngle(const dvec3& a, const dvec3& b, const dvec3& c) {
+  const double num = glm::dot(a, glm::cross(b, c));
+  if (num == 0.0) return 0.0;  // in the triangle's plane: no area seen (atan2 would give +-pi)
+  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+  const double den =
+      la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
+  return 2.0 * std::atan2(num, den);
+}
+
 }  // namespace
+
+double windingNumber(const Mesh& mesh, const dvec3& point) {
+  const size_t n = mesh.triangleCount();
+  std::vector<double> omega(n);
+  parallelFor((n + 8191) / 8192, [&](size_t chunk) {
+    const size_t end = std::min(n, (chunk + 1) * 8192);
+    for (size_t t = chunk * 8192; t < end; ++t)
+      omega[t] = solidAngle(dvec3(mesh.vertex(t, 0)) - point, dvec3(mesh.vertex(t, 1)) - point,
+                            dvec3(mesh.vertex(t, 2)) - point);
+  });
+  double sum = 0.0;  // in triangle order, so the result does not depend on the thread count
+  for (const double o : omega) sum += o;
+  return sum / (4.0 * std::numbers::pi);
+}
 
 bool insideClosedMesh(const Mesh& mesh, const dvec3& point) {
   // Directions with no special alignment to axes or to each other; the next is tried when a ray
@@ -60,7 +86,13 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
   const dvec3 l(light);
   // Which facing casts: +1 light-facing only, -1 facing-away only, 0 both (two-sided).
   int cast_only = 0;
-  if (policy == CasterPolicy::Auto && mesh.closed) cast_only = insideClosedMesh(mesh, l) ? -1 : 1;
+  if (policy != CasterPolicy::TwoSided && mesh.closed) {
+    cast_only = insideClosedMesh(mesh, l) ? -1 : 1;
+  } else if (policy == CasterPolicy::SolidWithHoles && adjacency.inconsistent_edges == 0) {
+    // The facing that covers more of the light's view (silhouette.h). A tie (a closed part
+    // seen from outside, up to rounding) goes to the light-facing side.
+    cast_only = windingNumber(mesh, l) > 0.0 ? -1 : 1;
+  }
   // Facing in double: near-edge-on triangles must get one consistent sign for all their edges.
   parallelFor((n + 8191) / 8192, [&](size_t chunk) {
     const size_t end = std::min(n, (chunk + 1) * 8192);

@@ -12,6 +12,7 @@
 //   section 4: one wedge per silhouette edge).
 // - A closed mesh with the light inside: only the triangles facing away from it, flipped
 //   (light-facing ones would cast nothing and every outside point would wrongly be lit).
+// - SolidWithHoles, for penumbra wedges (below): an open mesh is taken as a solid with holes.
 // Per undirected edge the signed uses of the casting triangles are summed (edges.h): shared
 // edges of two same-facing triangles cancel, an open edge sums to +-1, an edge of three
 // triangles to whatever keeps the volume closed. Doom 3 BFG pairs directed edges the same way.
@@ -40,10 +41,30 @@ struct Silhouette {
 enum class CasterPolicy {
   Auto,      // one-sided for closed meshes (by the light's side), two-sided otherwise (above)
   TwoSided,  // every triangle casts, whatever the mesh
+  // Penumbra wedges. Two-sided casters give a fold edge (a light-facing triangle meets a
+  // facing-away one) multiplicity 2: two coincident wedges, each subtracting the light's
+  // covered fraction, so the penumbra reads 1 - 2c instead of 1 - c and its inner half is black
+  // (the wedges add per-edge coverage and cannot see overlap, 2002 paper, section 8). So one
+  // facing casts, as for a closed mesh, wherever the mesh is consistently oriented (closed or
+  // not; non-manifold edges are fine, the per-triangle volumes sum to a closed one anyway): for
+  // an open mesh the facing whose triangles cover more of the light's view, which is the
+  // light-facing one exactly when the generalized winding number at the light is <= 0
+  // (windingNumber). A ray from the light then counts the crossings of that facing only: rays
+  // that enter the solid through a hole and leave through its wall (light-facing chosen), or the
+  // reverse, are missed, so the inner side of an open mesh seen through a hole can come out lit
+  // where a ray cast finds it shadowed. A mesh with inconsistently oriented edges has no
+  // meaningful facing and stays two-sided (overlapping penumbrae at its folds included).
+  SolidWithHoles,
 };
 
 Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light,
                           CasterPolicy policy = CasterPolicy::Auto);
+
+// Generalized winding number of the mesh at `point` (Jacobson, Kavan and Sorkine-Hornung 2013):
+// the signed solid angle of its triangles seen from there over 4 pi, positive where a triangle
+// is seen from its back. 1 inside a closed outward-oriented mesh and 0 outside; for an open
+// mesh, (solid angle of the facing-away triangles - that of the light-facing ones) / 4 pi.
+double windingNumber(const Mesh& mesh, const dvec3& point);
 
 // True when `point` is inside the closed mesh (odd number of crossings of a ray from it).
 bool insideClosedMesh(const Mesh& mesh, const dvec3& point);

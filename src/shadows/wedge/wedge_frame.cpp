@@ -234,12 +234,16 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
   const bool soft = light.radius > 0.0f;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
-    // Open meshes cast two-sided (silhouette.h). Where both sheets of such a mesh meet at a
-    // silhouette edge, the edge has multiplicity 2: two coincident wedges and an umbra count of
-    // 2, so the LI is 255 (2 v - 1) and the inner half of the penumbra clamps to black (the
-    // stanford-bunny scene: penumbra error 0.33 against the oracle, hard shadows 0.21). It is
-    // the overlap the 2002 paper names as a limitation (section 8): left as is.
-    const Silhouette silhouette = findSilhouette(mesh, scene.adjacency[m], light.center);
+    // Open meshes cast one-sided where they are consistently oriented (silhouette.h,
+    // SolidWithHoles). Two-sided, a silhouette edge where both sheets of such a mesh meet has
+    // multiplicity 2: two coincident wedges and an umbra count of 2, so the LI is 255 (2 v - 1)
+    // and the inner half of the penumbra clamps to black (the overlap the 2002 paper names as a
+    // limitation, section 8; stanford-bunny's penumbra error against the oracle was 0.30). With
+    // a zero radius there is no penumbra, and the umbra must be the hard shadow volume bit for
+    // bit (wedge_frame.h), so the hard volume's casters are kept.
+    const Silhouette silhouette =
+        findSilhouette(mesh, scene.adjacency[m], light.center,
+                       soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto);
     f.silhouette_edges += silhouette.edges.size();
     WedgeOptions wedge_options;
     wedge_options.acute_vertex_wedges = options.acute_wedges;
