@@ -45,14 +45,15 @@ void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are
 bool depthRuleCulled(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
                      float zmax) {
   if (zmax <= 0.0f) return true;
-  auto plane = [&](int x, int y) { return t.a * (x + 0.5) + t.b * (y + 0.5) + t.c; };
-  const double c00 = plane(e.x0, e.y0), c10 = plane(e.x1, e.y0);
-  const double c01 = plane(e.x0, e.y1), c11 = plane(e.x1, e.y1);
+  // The plane's extremes over the rect's pixel centres: at the first corner plus each step
+  // across the rect taken where it lowers (raises) the depth.
+  const double c00 = t.a * (e.x0 + 0.5) + t.b * (e.y0 + 0.5) + t.c;
+  const double across = t.a * (e.x1 - e.x0), down = t.b * (e.y1 - e.y0);
   const double error = 8.0 * FLT_EPSILON *
                        (std::fabs(e.dc) + kBinTileSize * (std::fabs(e.da) + std::fabs(e.db))) +
                        1e-30;
-  const double lo = std::min({c00, c10, c01, c11}) - error;
-  const double hi = std::max({c00, c10, c01, c11}) + error;
+  const double lo = c00 + std::min(across, 0.0) + std::min(down, 0.0) - error;
+  const double hi = c00 + std::max(across, 0.0) + std::max(down, 0.0) + error;
   if (zfail) return lo > double(zmax);  // entirely in front of every pixel
   return hi <= double(zmin);            // entirely behind or at every pixel
 }

@@ -38,6 +38,13 @@ struct TileWork {
   uint64_t tested = 0, culled = 0;
 };
 
+std::vector<WedgeCullPlanes> cullPlanes(const WedgeFrame& frame, int width, int height) {
+  std::vector<WedgeCullPlanes> planes(frame.screen.size());
+  for (size_t i = 0; i < planes.size(); ++i)
+    planes[i] = wedgeCullPlanes(frame.screen[i], width, height);
+  return planes;
+}
+
 // One counter set per bin tile (forEachTriangleInTiles hands out bin tile indices), summed in
 // tile order so counts do not depend on the thread count.
 size_t binTileCount(int width, int height) {
@@ -101,6 +108,7 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
   const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
   const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
   std::vector<TileWork> work(binTileCount(width, height));
+  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
   forEachTriangleInTiles(
       frame.triangles, width, height,
       [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
@@ -115,7 +123,8 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
             e, ranges,
             [&](const TileEdges& sub, float zmin, float zmax) {
               ++tw.tested;
-              const bool culled = penumbraCulled(options.cull, wedge, sub, zmin, zmax);
+              const bool culled =
+                  penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax);
               tw.culled += culled;
               return culled ? 0 : 1;
             },
@@ -133,6 +142,7 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
   const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
   const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
   std::vector<TileWork> work(binTileCount(width, height));
+  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
   forEachTriangleInTiles(
       frame.triangles, width, height,
       [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
@@ -152,7 +162,8 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
                   !(options.cull != CullMode::None &&
                     depthRuleCulled(t, sub, role.zfail, zmin, zmax)))
                 parts |= kUmbra;
-              if (wedge != nullptr && !penumbraCulled(options.cull, *wedge, sub, zmin, zmax))
+              if (wedge != nullptr &&
+                  !penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax))
                 parts |= kPenumbra;
               tw.culled += parts == 0;
               return parts;
