@@ -2,6 +2,7 @@
 // Tiles for z-min/z-max occlusion culling (2004 paper, section 4), of any size 2^n, n = 1..8,
 // walked inside the bin tiles that own the pixels (fixed_point.h: kBinTileSize).
 #include <algorithm>
+#include <cstdint>
 
 #include "raster/depth_buffer.h"
 #include "raster/fixed_point.h"
@@ -9,24 +10,52 @@
 
 namespace penumbra {
 
-// Walks the culling tiles of `range` that the triangle rect of `e` touches (a culling tile at
-// least as large as the bin tile contains the rect whole). decide(sub, zmin, zmax), with `sub`
-// restricted to that culling tile's pixels, runs once per culling tile (the papers' per-tile
-// test, counted by the caller) and returns a code: 0 to cull the tile, else what to draw there.
-// Then draw(rect, code) runs once per rectangle of adjacent tiles with the same code: runs along
-// a row of culling tiles, extended down while the next row has the same run. Each pixel is drawn once with its tile's code, so
-// the buffers and counts are those of a per-tile walk, but a bin tile with nothing culled is
-// one kernel call instead of up to (32 / 2^level)^2 calls on rows shorter than a SIMD vector
-// (columns, 8x8 tiles, soft frame: 1920x1080 67 -> 52 ms, 640x427 16.1 -> 15.4 ms, medians
-// of 3 interleaved runs).
+// Culling tiles visited and culled, the tiles_tested / tiles_culled counters.
+struct CullTally {
+  uint64_t tested = 0, culled = 0;
+};
+
+// Walks the culling tiles of level `level` that the triangle rect of `e` touches (a culling
+// tile at least as large as the bin tile contains the rect whole). decide(sub, zmin, zmax), with
+// `sub` restricted to that culling tile's pixels and [zmin, zmax] its stored depth range, is the
+// papers' per-tile test: it returns a code, 0 to cull the tile, else what to draw there (for
+// passes with two parts, a bit per part). Then draw(rect, code) runs once per rectangle of
+// adjacent tiles with the same code: runs along a row of culling tiles, extended down while the
+// next row has the same run. Each pixel is drawn once with its tile's code, so the buffers and
+// counts are those of a per-tile walk, but a bin tile with nothing culled is one kernel call
+// instead of up to (32 / 2^level)^2 calls on rows shorter than a SIMD vector (columns, 8x8
+// tiles, soft frame: 1920x1080 67 -> 52 ms, 640x427 16.1 -> 15.4 ms, medians of 3 interleaved
+// runs).
+//
+// `decide` must be monotonic: a rect inside another, with a depth range inside the other's, gets
+// no part the larger one culls. The papers' tests are (a plane's maximum over a smaller box is
+// smaller; the z-range rejects compare with a narrower range). So tiles smaller than the bin
+// tile are first decided together on the whole rect with the bin tile's range: when that culls
+// everything, each of them would have been culled, and they are tallied so without a test each
+// (most pairs of a long shadow quad or wedge face and a tile are culled whole).
 template <class Decide, class Draw>
-void forEachCullRect(const TileEdges& e, const TileDepthRange& range, Decide&& decide,
-                     Draw&& draw) {
-  const int level = range.level;
+void forEachCullRect(const TileEdges& e, const DepthBuffer& depth, int level, Decide&& decide,
+                     Draw&& draw, CullTally& tally) {
   if (level >= kBinTileLevel) {
-    const int code = decide(e, range.zmin.at(e.x0 >> level, e.y0 >> level),
-                            range.zmax.at(e.x0 >> level, e.y0 >> level));
-    if (code != 0) draw(e, code);
+    const TileDepthRange& range = depth.tileRange(level);
+    const int cx = e.x0 >> level, cy = e.y0 >> level;
+    const int code = decide(e, range.zmin.at(cx, cy), range.zmax.at(cx, cy));
+    ++tally.tested;
+    if (code != 0) {
+      draw(e, code);
+    } else {
+      ++tally.culled;
+    }
+    return;
+  }
+  const TileDepthRange& range = depth.tileRange(level);
+  const TileDepthRange& bin = depth.tileRange(kBinTileLevel);
+  const int bx = e.x0 >> kBinTileLevel, by = e.y0 >> kBinTileLevel;
+  if (decide(e, bin.zmin.at(bx, by), bin.zmax.at(bx, by)) == 0) {
+    const uint64_t tiles = uint64_t((e.x1 >> level) - (e.x0 >> level) + 1) *
+                           uint64_t((e.y1 >> level) - (e.y0 >> level) + 1);
+    tally.tested += tiles;
+    tally.culled += tiles;
     return;
   }
   const int size = 1 << level;
@@ -57,6 +86,8 @@ void forEachCullRect(const TileEdges& e, const TileDepthRange& range, Decide&& d
         sub.x1 = std::min(e.x1, cx * size + size - 1);
         sub.y1 = std::min(e.y1, cy * size + size - 1);
         code = decide(sub, range.zmin.at(cx, cy), range.zmax.at(cx, cy));
+        ++tally.tested;
+        tally.culled += code == 0;
       }
       if (code == run_code && cx <= cx_last) {
         if (code != 0) next[next_count - 1].cx1 = cx;

@@ -16,8 +16,7 @@ namespace {
 
 struct TileCounts {
   KernelCounts kernel;
-  uint64_t tested = 0;
-  uint64_t culled = 0;
+  CullTally tally;
 };
 
 struct TileBox {
@@ -35,8 +34,8 @@ void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are
     stats.pixels_rasterized += t.kernel.covered;
     stats.z_reads += t.kernel.covered;
     if (writes_are_stencil) stats.stencil_writes += t.kernel.writes;
-    stats.tiles_tested += t.tested;
-    stats.tiles_culled += t.culled;
+    stats.tiles_tested += t.tally.tested;
+    stats.tiles_culled += t.tally.culled;
   }
 }
 
@@ -71,9 +70,9 @@ void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
     for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
-      ++c.tested;
+      ++c.tally.tested;
       if (!setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e)) {
-        ++c.culled;
+        ++c.tally.culled;
         continue;
       }
       depthKernel(e, uint32_t(t.payload), target, c.kernel, simd);
@@ -91,7 +90,6 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                  width, height);
   const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
-  const TileDepthRange& ranges = depth.tileRange(options.cull_level);
   std::vector<TileCounts> counts(bins.tileCount());
   const StencilTarget target{depth.depth.data(), stencil.data(), width};
   parallelFor(bins.tileCount(), [&](size_t tile) {
@@ -105,16 +103,14 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
       const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
       const DepthRule rule = zfail ? DepthRule::NotCloser : DepthRule::Closer;
       forEachCullRect(
-          e, ranges,
+          e, depth, options.cull_level,
           [&](const TileEdges& sub, float zmin, float zmax) {
-            ++c.tested;
-            const bool culled = options.tile_culling && depthRuleCulled(t, sub, zfail, zmin, zmax);
-            c.culled += culled;
-            return culled ? 0 : 1;
+            return options.tile_culling && depthRuleCulled(t, sub, zfail, zmin, zmax) ? 0 : 1;
           },
           [&](const TileEdges& rect, int) {
             stencilKernel(rect, contribution, rule, target, c.kernel, options.simd);
-          });
+          },
+          c.tally);
     }
   });
   sumInto(counts, stats, true);

@@ -35,7 +35,7 @@ namespace {
 
 struct TileWork {
   WedgeKernelCounts umbra, penumbra;
-  uint64_t tested = 0, culled = 0;
+  CullTally tally;
 };
 
 std::vector<WedgeCullPlanes> cullPlanes(const WedgeFrame& frame, int width, int height) {
@@ -59,8 +59,8 @@ void addTileWork(const std::vector<TileWork>& tiles, Stats& stats) {
     stats.stencil_writes += t.umbra.writes + t.penumbra.writes;
     stats.penumbra_tests += t.penumbra.covered;
     stats.penumbra_inside += t.penumbra.inside;
-    stats.tiles_tested += t.tested;
-    stats.tiles_culled += t.culled;
+    stats.tiles_tested += t.tally.tested;
+    stats.tiles_culled += t.tally.culled;
   }
 }
 
@@ -105,7 +105,6 @@ void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& option
 void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   const int width = li.width(), height = li.height();
-  const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
   const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
   std::vector<TileWork> work(binTileCount(width, height));
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
@@ -120,17 +119,15 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
         k.wedge = &wedge;
         k.li_scale = float(full);
         forEachCullRect(
-            e, ranges,
+            e, eye.depth, options.tile_level,
             [&](const TileEdges& sub, float zmin, float zmax) {
-              ++tw.tested;
-              const bool culled =
-                  penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax);
-              tw.culled += culled;
-              return culled ? 0 : 1;
+              return penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax) ? 0
+                                                                                              : 1;
             },
             [&](const TileEdges& rect, int) {
               wedgeKernel(rect, k, target, tw.penumbra, options.simd);
-            });
+            },
+            tw.tally);
       },
       stats);
   addTileWork(work, stats);
@@ -139,7 +136,6 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
 void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const EyeBuffers& eye,
                 int full, LiBuffer& li, Stats& stats) {
   const int width = li.width(), height = li.height();
-  const TileDepthRange& ranges = eye.depth.tileRange(options.tile_level);
   const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
   std::vector<TileWork> work(binTileCount(width, height));
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
@@ -154,9 +150,8 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
         // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra.
         constexpr int kUmbra = 1, kPenumbra = 2;
         forEachCullRect(
-            e, ranges,
+            e, eye.depth, options.tile_level,
             [&](const TileEdges& sub, float zmin, float zmax) {
-              ++tw.tested;
               int parts = 0;
               if (role.umbra_weight != 0 &&
                   !(options.cull != CullMode::None &&
@@ -165,7 +160,6 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
               if (wedge != nullptr &&
                   !penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax))
                 parts |= kPenumbra;
-              tw.culled += parts == 0;
               return parts;
             },
             [&](const TileEdges& rect, int parts) {
@@ -180,7 +174,8 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
               // that part runs, else under the umbra.
               wedgeKernel(rect, k, target, k.wedge != nullptr ? tw.penumbra : tw.umbra,
                           options.simd);
-            });
+            },
+            tw.tally);
       },
       stats);
   addTileWork(work, stats);
@@ -196,7 +191,7 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
       [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         TileWork& tw = work[v.tile];
-        ++tw.tested;
+        ++tw.tally.tested;
         const bool entry = role.wedge != kNoWedge && t.facing * role.face_sign > 0;
         if (!entry) {
           // Umbra quads that are not a front-facing wedge face: back-facing front planes, where

@@ -1,0 +1,109 @@
+// forEachCullRect (raster/cull_tiles.h): merged rectangles and the bin-tile pre-test must give
+// exactly the per-culling-tile walk of the papers: the same pixels drawn with the same code, and
+// the same tested / culled tallies.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "raster/cull_tiles.h"
+#include "raster_test_util.h"
+
+namespace penumbra {
+namespace {
+
+using testing::TestRandom;
+
+// Pixel state after a walk: 0 not drawn, else the code it was drawn with (drawn twice: -1).
+struct Walk {
+  std::vector<int> code;
+  CullTally tally;
+};
+
+// A depth buffer of random surfaces and background holes, so tile ranges vary.
+DepthBuffer randomDepth(int width, int height, TestRandom& random) {
+  DepthBuffer depth;
+  depth.depth.resize(width, height, 0.0f);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const bool hole = (x / 7 + y / 5) % 9 == 0;
+      depth.depth.at(x, y) = hole ? 0.0f : float(0.2 + 0.6 * (x + 2 * y) / (width + 2 * height) +
+                                                 0.05 * random.uniform());
+    }
+  depth.buildTileRanges();
+  return depth;
+}
+
+TEST(RasterCullTiles, MergedWalkEqualsPerTileWalk) {
+  constexpr int kWidth = 200, kHeight = 150;
+  TestRandom random(11);
+  const DepthBuffer depth = randomDepth(kWidth, kHeight, random);
+  for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
+    for (int trial = 0; trial < 40; ++trial) {
+      // A monotonic decision like the papers' tests (cull_tiles.h): part 1 culled when a
+      // plane over the box is negative at its maximum, part 2 when the tile lies behind a depth.
+      const double a = random.uniform(-1, 1), b = random.uniform(-1, 1);
+      const double c = random.uniform(-150, 150);
+      const float z = float(random.uniform(0.1, 0.9));
+      auto decide = [&](const TileEdges& r, float zmin, float zmax) {
+        const double top = a * (a >= 0 ? r.x1 : r.x0) + b * (b >= 0 ? r.y1 : r.y0) + c;
+        int parts = 0;
+        if (top >= 0) parts |= 1;
+        if (zmax > 0 && !(zmax < z)) parts |= 2;
+        (void)zmin;
+        return parts;
+      };
+      // A rect within one bin tile, as forEachTriangleInTiles hands them out.
+      const int bx = int(random.uniform(0, 7)) * kBinTileSize;
+      const int by = int(random.uniform(0, 5)) * kBinTileSize;
+      TileEdges e{};
+      e.tx0 = bx;
+      e.ty0 = by;
+      e.x0 = std::min(kWidth - 1, bx + int(random.uniform(0, 20)));
+      e.y0 = std::min(kHeight - 1, by + int(random.uniform(0, 20)));
+      e.x1 = std::min(kWidth - 1, e.x0 + int(random.uniform(0, 32)));
+      e.y1 = std::min(kHeight - 1, e.y0 + int(random.uniform(0, 32)));
+      e.x1 = std::min(e.x1, bx + kBinTileSize - 1);
+      e.y1 = std::min(e.y1, by + kBinTileSize - 1);
+
+      Walk merged{std::vector<int>(size_t(kWidth) * kHeight, 0), {}};
+      forEachCullRect(
+          e, depth, level, decide,
+          [&](const TileEdges& r, int code) {
+            for (int y = r.y0; y <= r.y1; ++y)
+              for (int x = r.x0; x <= r.x1; ++x) {
+                int& p = merged.code[size_t(y) * kWidth + x];
+                p = p == 0 ? code : -1;
+              }
+          },
+          merged.tally);
+
+      // The per-tile walk: every culling tile the rect touches, decided on its part of the rect.
+      Walk reference{std::vector<int>(size_t(kWidth) * kHeight, 0), {}};
+      const TileDepthRange& range = depth.tileRange(level);
+      const int size = 1 << level;
+      for (int cy = e.y0 >> level; cy <= (e.y1 >> level); ++cy)
+        for (int cx = e.x0 >> level; cx <= (e.x1 >> level); ++cx) {
+          TileEdges sub = e;
+          sub.x0 = std::max(e.x0, cx * size);
+          sub.y0 = std::max(e.y0, cy * size);
+          sub.x1 = std::min(e.x1, cx * size + size - 1);
+          sub.y1 = std::min(e.y1, cy * size + size - 1);
+          const int code = decide(sub, range.zmin.at(cx, cy), range.zmax.at(cx, cy));
+          ++reference.tally.tested;
+          reference.tally.culled += code == 0;
+          for (int y = sub.y0; y <= sub.y1 && code != 0; ++y)
+            for (int x = sub.x0; x <= sub.x1; ++x) reference.code[size_t(y) * kWidth + x] = code;
+        }
+      // If it failed: merging drew a pixel twice, with another tile's code or not at all, or
+      // the bin-tile pre-test culled a tile the per-tile test keeps (changing the image), or
+      // the counters no longer count the papers' per-tile tests.
+      ASSERT_EQ(merged.code, reference.code) << "level " << level << " trial " << trial;
+      EXPECT_EQ(merged.tally.tested, reference.tally.tested) << "level " << level;
+      EXPECT_EQ(merged.tally.culled, reference.tally.culled) << "level " << level;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace penumbra
