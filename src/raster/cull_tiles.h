@@ -27,8 +27,8 @@ struct CullTally {
 // tiles, soft frame: 1920x1080 67 -> 52 ms, 640x427 16.1 -> 15.4 ms, medians of 3 interleaved
 // runs).
 //
-// `decide` must be monotonic: a rect inside another, with a depth range inside the other's, gets
-// no part the larger one culls. The papers' tests are (a plane's maximum over a smaller box is
+// `decide` must be monotonic: a rect inside another, with a depth range inside the other's,
+// culls at least the parts the larger one culls. The papers' tests are (a plane's maximum over a smaller box is
 // smaller; the z-range rejects compare with a narrower range). So tiles smaller than the bin
 // tile are first decided together on the whole rect with the bin tile's range: when that culls
 // everything, each of them would have been culled, and they are tallied so without a test each
