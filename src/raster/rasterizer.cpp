@@ -60,13 +60,27 @@ bool depthRuleCulled(const SetupTriangle& t, const TileEdges& e, bool zfail, flo
 void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
                     Image<uint32_t>& primitive, Stats& stats, bool simd) {
   const int width = depth.width(), height = depth.height();
+  PENUMBRA_CHECK(primitive.width() == width && primitive.height() == height,
+                 "primitive ids {}x{} do not match depth {}x{}", primitive.width(),
+                 primitive.height(), width, height);
   const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
   std::vector<TileCounts> counts(bins.tileCount());
-  const DepthTarget target{depth.data(), primitive.data(), width};
   parallelFor(bins.tileCount(), [&](size_t tile) {
     const TileBox box = tileBox(bins, tile, width, height);
     TileCounts& c = counts[tile];
+    // The tile is drawn in a cleared copy of its own, which stays in L1 while every triangle of
+    // the tile reads and writes it, then stored once. Drawn in place, two thirds of the depth
+    // kernel's time went to waiting for the first load of each tile row (spheres, 1920x1080):
+    // a tile's 32 rows lie one image row apart, in as many pages.
+    alignas(64) float tile_depth[kBinTileSize * kBinTileSize];
+    alignas(64) uint32_t tile_primitive[kBinTileSize * kBinTileSize];
+    std::fill_n(tile_depth, kBinTileSize * kBinTileSize, 0.0f);
+    std::fill_n(tile_primitive, kBinTileSize * kBinTileSize, kNoPrimitive);
+    const int w = box.x1 - box.x0 + 1;
+    DepthTarget target{tile_depth, tile_primitive, kBinTileSize};
+    target.x0 = box.x0;
+    target.y0 = box.y0;
     for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
@@ -76,6 +90,10 @@ void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
         continue;
       }
       depthKernel(e, uint32_t(t.payload), target, c.kernel, simd);
+    }
+    for (int y = box.y0; y <= box.y1; ++y) {
+      std::copy_n(tile_depth + (y - box.y0) * kBinTileSize, w, &depth.at(box.x0, y));
+      std::copy_n(tile_primitive + (y - box.y0) * kBinTileSize, w, &primitive.at(box.x0, y));
     }
   });
   sumInto(counts, stats, false);

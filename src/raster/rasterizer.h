@@ -11,8 +11,9 @@
 
 namespace penumbra {
 
-// Draws `triangles` into depth (reversed-Z, cleared to 0 by the caller) and primitive ids
-// (payload), closest wins, ties keep the earlier triangle. Counts pixels_rasterized,
+// Draws `triangles` into depth (reversed-Z) and primitive ids (payload), sized alike, closest
+// wins, ties keep the earlier triangle. Every pixel is written: where no triangle covers it,
+// depth 0 (background) and kNoPrimitive. Counts pixels_rasterized,
 // z_reads and stencil_writes (here: depth writes) and triangles.
 void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
                     Image<uint32_t>& primitive, Stats& stats, bool simd);

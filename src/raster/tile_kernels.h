@@ -25,10 +25,13 @@ struct TileEdges {
 bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out);
 
 // Where a kernel reads and writes: row-major buffers of the full image.
+// The depth target may be a tile's own copy: pixel (x, y) of the image is element
+// (y - y0) * stride + (x - x0).
 struct DepthTarget {
   float* depth;
   uint32_t* primitive;
   int stride;
+  int x0 = 0, y0 = 0;
 };
 struct StencilTarget {
   const float* depth;

@@ -44,8 +44,8 @@ void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget
     const float row_depth = e.dc + e.db * float(ry);
     const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
                   r2 = e.e0[2] + e.dy[2] * ry;
-    float* depth_row = target.depth + size_t(y) * target.stride;
-    uint32_t* id_row = target.primitive + size_t(y) * target.stride;
+    float* depth_row = target.depth + size_t(y - target.y0) * target.stride;
+    uint32_t* id_row = target.primitive + size_t(y - target.y0) * target.stride;
     for (int x = e.x0; x <= e.x1; ++x) {
       const int rx = x - e.tx0;
       const bool inside = (r0 + e.dx[0] * rx) >= 0 && (r1 + e.dx[1] * rx) >= 0 &&
@@ -53,9 +53,10 @@ void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget
       if (!inside) continue;
       ++counts.covered;
       const float d = row_depth + e.da * float(rx);
-      if (d > depth_row[x]) {
-        depth_row[x] = d;
-        id_row[x] = primitive;
+      const int i = x - target.x0;
+      if (d > depth_row[i]) {
+        depth_row[i] = d;
+        id_row[i] = primitive;
         ++counts.writes;
       }
     }

@@ -45,8 +45,8 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
-    float* depth_row = target.depth + size_t(y) * target.stride;
-    uint32_t* id_row = target.primitive + size_t(y) * target.stride;
+    float* depth_row = target.depth + size_t(y - target.y0) * target.stride;
+    uint32_t* id_row = target.primitive + size_t(y - target.y0) * target.stride;
     for (int x = e.x0; x <= e.x1; x += lanes) {
       const int rx = x - e.tx0;
       const auto in_row = hn::FirstN(di, size_t(e.x1 - x + 1));
@@ -55,12 +55,12 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
       const auto inside = hn::RebindMask(df, inside_i);
       counts.covered += hn::CountTrue(df, inside);
       const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
-      const auto stored = hn::MaskedLoad(inside, df, depth_row + x);
+      const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
       const auto write = hn::And(inside, hn::Gt(d, stored));
       if (hn::AllFalse(df, write)) continue;
       counts.writes += hn::CountTrue(df, write);
-      hn::BlendedStore(d, write, df, depth_row + x);
-      hn::BlendedStore(id, hn::RebindMask(du, write), du, id_row + x);
+      hn::BlendedStore(d, write, df, depth_row + (x - target.x0));
+      hn::BlendedStore(id, hn::RebindMask(du, write), du, id_row + (x - target.x0));
     }
   }
 }
