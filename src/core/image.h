@@ -2,11 +2,36 @@
 // A 2D array of pixels, row-major, row 0 at the top of the picture.
 #include <algorithm>
 #include <cstddef>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
 
 namespace penumbra {
+
+// std::allocator, except that value-less construction default-initialises: growing a vector of
+// pixels with resize() then leaves trivial pixels uninitialised instead of zeroing them.
+template <typename T>
+struct DefaultInitAllocator : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = DefaultInitAllocator<U>;
+  };
+  DefaultInitAllocator() = default;
+  template <typename U>
+  DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
 
 template <typename T>
 class Image {
@@ -19,6 +44,15 @@ class Image {
     width_ = width;
     height_ = height;
     pixels_.assign(size_t(width) * size_t(height), fill);
+  }
+  // For a producer that writes every pixel (a full-frame pass): no clearing pass over memory
+  // that is overwritten anyway (8 MB per float buffer at 1920x1080). Pixels keep whatever they
+  // held; read none before writing it.
+  void resizeForOverwrite(int width, int height) {
+    PENUMBRA_CHECK(width >= 0 && height >= 0, "image size {}x{} is negative", width, height);
+    width_ = width;
+    height_ = height;
+    pixels_.resize(size_t(width) * size_t(height));
   }
   void fill(T value) { std::fill(pixels_.begin(), pixels_.end(), value); }
 
@@ -43,7 +77,7 @@ class Image {
  private:
   int width_ = 0;
   int height_ = 0;
-  std::vector<T> pixels_;
+  std::vector<T, DefaultInitAllocator<T>> pixels_;
 };
 
 }  // namespace penumbra

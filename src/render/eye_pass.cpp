@@ -43,8 +43,9 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
     base += mesh.positions.size();
   }
   EyeBuffers eye;
-  eye.depth.depth.resize(view.width, view.height, 0.0f);
-  eye.primitive.resize(view.width, view.height, kNoPrimitive);
+  // rasterizeDepth writes every pixel, background included.
+  eye.depth.depth.resizeForOverwrite(view.width, view.height);
+  eye.primitive.resizeForOverwrite(view.width, view.height);
   rasterizeDepth(tris, eye.depth.depth, eye.primitive, stats, simd);
   eye.depth.buildTileRanges();
   return eye;

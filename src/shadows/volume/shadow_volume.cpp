@@ -48,15 +48,8 @@ TechniqueResult renderShadowVolume(const TechniqueOptions& options, const Scene&
   }
   {
     PassTimer timer(stats, "resolve");
-    result.visibility.resize(view.width, view.height, 1.0f);
-    const Image<float>& depth = eye.depth.depth;
-    parallelFor(size_t(view.height), [&](size_t y) {
-      for (int x = 0; x < view.width; ++x) {
-        if (depth.at(x, int(y)) > 0.0f && stencil.at(x, int(y)) != 0)
-          result.visibility.at(x, int(y)) = 0.0f;
-      }
-    });
-    shadowFacingAway(scene, light, view, eye, result.visibility);
+    resolveVisibility(scene, light, view, eye, result.visibility,
+                      [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
   }
   return result;
 }

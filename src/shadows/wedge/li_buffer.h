@@ -19,13 +19,16 @@ inline int16_t liAdd(int16_t li, int32_t value) {
   return int16_t(uint16_t(uint32_t(int32_t(li)) + uint32_t(value)));
 }
 
-// Visibility in [0, 1] = clamp(LI, 0, full) / full; background pixels (depth 0) are 1.
-// `hard`: the light has no radius, so the buffer holds full - full * count of the hard shadow
-// volume; visibility is then 1 only where the count is 0, the ShadowVolume rule. A count below
-// 0 (a rasterization tie on a shadow boundary; the eye inside a volume with z-pass) is shadow
-// there too, where clamping would make it lit: radius 0 must give the hard image exactly.
-Image<float> liToVisibility(const LiBuffer& li, const Image<float>& depth, int full = kLiFull,
-                            bool hard = false);
+// Visibility in [0, 1] of a pixel with a surface = clamp(LI, 0, full) / full (the background
+// is 1: resolveVisibility, facing_away.h). `hard`: the light has no radius, so the buffer holds
+// full - full * count of the hard shadow volume; visibility is then 1 only where the count is
+// 0, the ShadowVolume rule. A count below 0 (a rasterization tie on a shadow boundary; the eye
+// inside a volume with z-pass) is shadow there too, where clamping would make it lit: radius 0
+// must give the hard image exactly.
+inline float liVisibility(int16_t li, int full, bool hard) {
+  if (hard) return li == full ? 1.0f : 0.0f;
+  return float(li < 0 ? 0 : (li > full ? full : li)) / float(full);
+}
 
 // The wedge passes of a wedge technique (wedge_technique.cpp) up to the LI buffer, before it is
 // clamped into visibility: implementations are compared on it (the three-pass and single-pass

@@ -270,13 +270,14 @@ TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene
   result.stats = std::move(wedges.stats);
   {
     PassTimer timer(result.stats, "resolve");
-    result.visibility =
-        liToVisibility(wedges.li, eye.depth.depth, wedges.full, !(light.radius > 0.0f));
     // As the hard shadow volume (shadow_volume.cpp) and the oracle: a point whose triangle
     // faces away from the whole light gets none of it, whatever the wedges near the terminator
     // say (their silhouette is the centre's for the whole light, 2002 paper, section 8). With a
     // zero radius this keeps the image the hard volume's exactly.
-    shadowFacingAway(scene, light, view, eye, result.visibility);
+    const bool hard = !(light.radius > 0.0f);
+    resolveVisibility(scene, light, view, eye, result.visibility, [&](int x, int y) {
+      return liVisibility(wedges.li.at(x, y), wedges.full, hard);
+    });
   }
   return result;
 }
