@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "shadows/wedge/wedge_gap.h"
 #include "shadows/wedge/wedge_pairing.h"
 #include "shadows/wedge/wedge_sides.h"
 
@@ -45,17 +46,21 @@
 //   streak in the 2004 algorithm. So a pairing whose lines leave twice the light's cone, or
 //   fall behind an edge, is split (wedge_sides.h, sideFits): each wedge ends on its own plane
 //   through the vertex and the light's diameter along its n (as an unpaired end), so the two
-//   may overlap or leave a notch at the tip, as without Figure 7's extra wedges. Each umbra
-//   quad follows its own wedge's front ray, and a connector quad (a == b == the vertex, no
-//   wedge) fans between the two directions at infinity, so the volume stays closed and every
-//   front face is still exactly its umbra quad. Counted in split_vertices. (If the shared plane
+//   may overlap or leave a notch at the tip. Each umbra quad follows its own wedge's front
+//   ray, and a connector quad (a == b == the vertex) fans between the two directions at
+//   infinity, so the volume stays closed and every front face is still exactly its umbra quad.
+//   The notch lies inside that closed umbra volume, so with no wedge over it it rendered as a
+//   short dark dash at the tip (bunny-lowres's ears); one extra wedge per notch, as Figure 7
+//   suggests, covers it (wedge_gap.h: a cone from the vertex between the two end planes whose
+//   front face is the connector). Counted in split_vertices. (If the shared plane
 //   of a run of parallel edges does not fit, the same happens without connectors: the
 //   parallel quads already span the two directions.)
 // - An end with no partner (a silhouette that is not a closed loop, or a loop whose only
 //   non-parallel edge is this one) is closed by its own plane through the vertex and the light
 //   centre (wedge_sides.h, loneSide); counted in unpaired_ends.
 // - Figure 6 (the side planes cross inside the wedge): wedge_sides.h, cutWhereSidesCross.
-// - Figure 7 (extra wedges at acute vertices): not implemented; the option throws.
+// - Figure 7 (extra wedges at acute vertices): only the one gap wedge at split vertices above;
+//   the option (several wedges around every acute vertex) throws.
 namespace penumbra {
 
 using wedge_detail::EdgePlanes;
@@ -300,6 +305,13 @@ WedgeSet buildWedges(const Mesh& mesh, const Silhouette& silhouette, const Light
     q.prev = pairs.pairings[p].in;
     q.next = pairs.pairings[p].out;
     q.has_wedge = false;
+    // The notch between the two wedges' end planes (if they do not overlap there).
+    const uint32_t in = pairs.pairings[p].in, next = pairs.pairings[p].out;
+    Wedge gap;
+    if (r > 0.0 && wedge_detail::gapWedge(out.wedges[wedge_of[in]], wedge_of[in],
+                                          out.wedges[wedge_of[next]], wedge_of[next],
+                                          connector_of[p], c, gap))
+      out.gap_wedges.push_back(gap);
   }
   return out;
 }

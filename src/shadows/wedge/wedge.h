@@ -82,7 +82,8 @@ struct Wedge {
   bool flat = false;
   uint32_t unit_edge = 0;  // index of this wedge's quad in WedgeSet::umbra
   // The wedges sharing the left / right plane (indices into WedgeSet::wedges), or kNoWedgeLink
-  // where the wedge ends on its own plane: a split vertex or an unpaired end (wedge.cpp).
+  // where the wedge ends on its own plane: a split vertex or an unpaired end (wedge.cpp). (A
+  // gap wedge at a split vertex shares the plane but is not linked from here: gap_wedges.)
   uint32_t left_wedge = kNoWedgeLink, right_wedge = kNoWedgeLink;
 };
 
@@ -104,7 +105,9 @@ struct UmbraQuad {
   // The quads joined to this one at a and at b (indices into WedgeSet::umbra), or kNoWedgeLink
   // where the silhouette loop is broken.
   uint32_t prev = kNoWedgeLink, next = kNoWedgeLink;
-  bool has_wedge = true;  // false for nearly parallel edges and connectors (no penumbra wedge)
+  // False for nearly parallel edges and connectors: no edge wedge has this quad as its front
+  // face (a connector's gap wedge, WedgeSet::gap_wedges, draws its own front face over it).
+  bool has_wedge = true;
 };
 
 struct WedgeOptions {
@@ -131,6 +134,12 @@ struct WedgeSet {
   // Pairings whose shared side plane would not fit both wedges (acute corners, wedge.cpp):
   // each wedge ends on its own plane there and a connector umbra quad joins them.
   size_t split_vertices = 0;
+  // One per split vertex where the two wedges leave a notch between their end planes: a cone
+  // with its apex at the vertex (a == b), front face the connector fan, sides the two end
+  // planes negated (wedge_gap.h). Its left_wedge / right_wedge index `wedges`, its unit_edge
+  // is the connector's quad. Kept apart from `wedges`, whose every entry has a silhouette edge
+  // and a front face that is its own unit edge's quad.
+  std::vector<Wedge> gap_wedges;
 };
 
 // Throws penumbra::Error for a light with a negative or non-finite radius or centre, a

@@ -111,9 +111,20 @@ WedgeHull wedgeHull(const Wedge& w) {
   constexpr double kDirectionTolerance = 1e-9;
 
   WedgeHull hull;
+  // A gap wedge (wedge_gap.h, a == b) is a cone: all four planes pass through its apex, which
+  // is then its only finite vertex. Solving for it from four different triples gives four
+  // copies that differ by more than the merge distance (front and back are nearly parallel),
+  // so the apex is taken as is and only the directions (triples with w = 0) are solved for.
+  const bool cone = w.a == w.b;
+  if (cone)
+    hull.vertices.push_back(HullVertex{glm::normalize(dvec4(w.a, 1.0)),
+                                       uint8_t((1u << kFront) | (1u << kBack) | (1u << kLeft) |
+                                               (1u << kRight)),
+                                       w.a});
   for (int i = 0; i < 5; ++i)
     for (int j = i + 1; j < 5; ++j)
       for (int k = j + 1; k < 5; ++k) {
+        if (cone && k != kFar) continue;
         dvec4 x = cross4(constraint[i], constraint[j], constraint[k]);
         const double len = glm::length(x);
         const double scale = glm::length(constraint[i]) * glm::length(constraint[j]) *
@@ -272,16 +283,24 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
     auto finite = [&](uint32_t v) { return base + v; };
     auto hard_infinity = [&](uint32_t v) { return uint32_t(base + n + v); };
 
+    // The edge wedges, then the gap wedges at split vertices (wedge_gap.h). A gap wedge's
+    // front face is a triangle (the vertex and two directions), never a quad, so its
+    // connector umbra quad is counted as a plain umbra polygon and the front face is drawn
+    // as a penumbra face of its own, as for crossing front rays.
+    const size_t n_wedges = ws.wedges.size() + ws.gap_wedges.size();
+    const auto wedgeAt = [&](size_t i) -> const Wedge& {
+      return i < ws.wedges.size() ? ws.wedges[i] : ws.gap_wedges[i - ws.wedges.size()];
+    };
     // Which umbra quads are also the front face of a wedge: the unit edge's quad, when the
     // front rays do not cross (the front face is then a, b and the two front directions).
     const int32_t wedge_base = int32_t(f.wedges.size());
     std::vector<int32_t> front_face_of(ws.umbra.size(), kNoWedge);
-    std::vector<int32_t> global_wedge(ws.wedges.size(), kNoWedge);
-    std::vector<WedgeHull> hulls(ws.wedges.size());
+    std::vector<int32_t> global_wedge(n_wedges, kNoWedge);
+    std::vector<WedgeHull> hulls(n_wedges);
     if (soft) {
       int32_t next = wedge_base;
-      for (size_t i = 0; i < ws.wedges.size(); ++i) {
-        const Wedge& w = ws.wedges[i];
+      for (size_t i = 0; i < n_wedges; ++i) {
+        const Wedge& w = wedgeAt(i);
         if (w.flat) continue;
         hulls[i] = wedgeHull(w);
         if (!hulls[i].valid) {
@@ -293,7 +312,7 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
         std::vector<dvec4> corners;
         for (const HullVertex& v : hulls[i].vertices) corners.push_back(v.h);
         ScreenWedge screen = toScreenWedge(w, corners, view, options.smooth_falloff);
-        screen.front_quad = frontIsQuad(hulls[i]);
+        screen.front_quad = i < ws.wedges.size() && frontIsQuad(hulls[i]);
         f.screen.push_back(screen);
         if (screen.front_quad) front_face_of[w.unit_edge] = global_wedge[i];
       }
@@ -346,9 +365,9 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
     // The other faces of every wedge polyhedron (the penumbra footprint). Its corners on the
     // occluder are the mesh's own vertices and, when the front face is the umbra quad, its
     // front directions are the quad's: shared clip vertices keep the faces watertight.
-    for (size_t i = 0; i < ws.wedges.size(); ++i) {
+    for (size_t i = 0; i < n_wedges; ++i) {
       if (global_wedge[i] == kNoWedge) continue;
-      const Wedge& w = ws.wedges[i];
+      const Wedge& w = wedgeAt(i);
       const WedgeHull& hull = hulls[i];
       const bool quad = f.screen[size_t(global_wedge[i])].front_quad;
       const auto on = [](const HullVertex& v, std::initializer_list<int> faces) {
