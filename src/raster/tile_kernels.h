@@ -20,6 +20,28 @@ struct TileEdges {
   int x0, y0, x1, y1;    // pixels to visit, inclusive: triangle box within the tile
 };
 
+// The pixel walk the scalar twins share: calls fn(x, y) for every pixel of the rect inside all
+// three edges, row by row, left to right.
+template <class Fn>
+void forEachCoveredPixel(const TileEdges& e, Fn&& fn) {
+  for (int y = e.y0; y <= e.y1; ++y) {
+    const int ry = y - e.ty0;
+    const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
+                  r2 = e.e0[2] + e.dy[2] * ry;
+    for (int x = e.x0; x <= e.x1; ++x) {
+      const int rx = x - e.tx0;
+      if ((r0 + e.dx[0] * rx) >= 0 && (r1 + e.dx[1] * rx) >= 0 && (r2 + e.dx[2] * rx) >= 0)
+        fn(x, y);
+    }
+  }
+}
+
+// The triangle's depth at pixel (x, y) of the rect, in the order the SIMD kernels use (their
+// lanes add da * (rx + lane) to the row's value).
+inline float triangleDepthAt(const TileEdges& e, int x, int y) {
+  return (e.dc + e.db * float(y - e.ty0)) + e.da * float(x - e.tx0);
+}
+
 // Prepares `t` for the tile whose pixels are [tx0, tx1] x [ty0, ty1]; false when the triangle
 // misses the tile entirely (an edge is negative at all four rect corners).
 bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out);

@@ -39,54 +39,31 @@ bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, 
 
 void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
                        KernelCounts& counts) {
-  for (int y = e.y0; y <= e.y1; ++y) {
-    const int ry = y - e.ty0;
-    const float row_depth = e.dc + e.db * float(ry);
-    const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
-                  r2 = e.e0[2] + e.dy[2] * ry;
-    float* depth_row = target.depth + size_t(y - target.y0) * target.stride;
-    uint32_t* id_row = target.primitive + size_t(y - target.y0) * target.stride;
-    for (int x = e.x0; x <= e.x1; ++x) {
-      const int rx = x - e.tx0;
-      const bool inside = (r0 + e.dx[0] * rx) >= 0 && (r1 + e.dx[1] * rx) >= 0 &&
-                          (r2 + e.dx[2] * rx) >= 0;
-      if (!inside) continue;
-      ++counts.covered;
-      const float d = row_depth + e.da * float(rx);
-      const int i = x - target.x0;
-      if (d > depth_row[i]) {
-        depth_row[i] = d;
-        id_row[i] = primitive;
-        ++counts.writes;
-      }
+  forEachCoveredPixel(e, [&](int x, int y) {
+    ++counts.covered;
+    const float d = triangleDepthAt(e, x, y);
+    const size_t i = size_t(y - target.y0) * size_t(target.stride) + size_t(x - target.x0);
+    if (d > target.depth[i]) {
+      target.depth[i] = d;
+      target.primitive[i] = primitive;
+      ++counts.writes;
     }
-  }
+  });
 }
 
 void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rule,
                          const StencilTarget& target, KernelCounts& counts) {
-  for (int y = e.y0; y <= e.y1; ++y) {
-    const int ry = y - e.ty0;
-    const float row_depth = e.dc + e.db * float(ry);
-    const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
-                  r2 = e.e0[2] + e.dy[2] * ry;
-    const float* depth_row = target.depth + size_t(y) * target.stride;
-    int32_t* stencil_row = target.stencil + size_t(y) * target.stride;
-    for (int x = e.x0; x <= e.x1; ++x) {
-      const int rx = x - e.tx0;
-      const bool inside = (r0 + e.dx[0] * rx) >= 0 && (r1 + e.dx[1] * rx) >= 0 &&
-                          (r2 + e.dx[2] * rx) >= 0;
-      if (!inside) continue;
-      ++counts.covered;
-      const float stored = depth_row[x];
-      const float d = row_depth + e.da * float(rx);
-      const bool pass = rule == DepthRule::Closer ? d > stored : d <= stored;
-      if (stored > 0.0f && pass) {
-        stencil_row[x] += contribution;
-        ++counts.writes;
-      }
+  forEachCoveredPixel(e, [&](int x, int y) {
+    ++counts.covered;
+    const size_t i = size_t(y) * size_t(target.stride) + size_t(x);
+    const float stored = target.depth[i];
+    const float d = triangleDepthAt(e, x, y);
+    const bool pass = rule == DepthRule::Closer ? d > stored : d <= stored;
+    if (stored > 0.0f && pass) {
+      target.stencil[i] += contribution;
+      ++counts.writes;
     }
-  }
+  });
 }
 
 }  // namespace penumbra

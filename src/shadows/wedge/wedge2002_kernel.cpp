@@ -8,55 +8,44 @@ namespace penumbra {
 
 void wedge2002Kernel(const TileEdges& e, const ScreenWedge& w, int face, float li_scale,
                      const WedgeKernelTarget& target, WedgeKernelCounts& counts) {
-  for (int y = e.y0; y <= e.y1; ++y) {
-    const int ry = y - e.ty0;
-    const float row_depth = e.dc + e.db * float(ry);
-    const float sy = float(y) + 0.5f;
-    const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
-                  r2 = e.e0[2] + e.dy[2] * ry;
-    const float* depth_row = target.depth + size_t(y) * target.stride;
-    int16_t* li_row = target.li + size_t(y) * target.stride;
-    for (int x = e.x0; x <= e.x1; ++x) {
-      const int rx = x - e.tx0;
-      if (!((r0 + e.dx[0] * rx) >= 0 && (r1 + e.dx[1] * rx) >= 0 && (r2 + e.dx[2] * rx) >= 0))
-        continue;
-      ++counts.covered;
-      const float stored = depth_row[x];
-      if (!(stored > 0.0f)) continue;
-      const float sx = float(x) + 0.5f;
-      // p_i is p itself exactly when p lies between the entry p_f and the exit p_b, that is on
-      // the inner side of every wedge plane. Deciding it from the plane values at p rather than
-      // from the depths of the intersection points makes the decision exact at shared side
-      // planes: the neighbour evaluates the same plane negated, so a point is inside exactly
-      // one of the two (comparing rounded intersection depths instead dropped or doubled the
-      // neighbour's contribution at points within a rounding error of the plane).
-      const float f = w.front.eval(sx, sy, stored), b = w.back.eval(sx, sy, stored);
-      const float l = w.left.eval(sx, sy, stored), r = w.right.eval(sx, sy, stored);
-      const bool inside = f >= 0.0f && b >= 0.0f && l >= 0.0f && r >= 0.0f;
-      // Entry intensity: 1 on the front plane, 0 on the back and side planes (section 5), where
-      // the rasterized face passes the depth test. Exits through the front plane (s_i = 1) are
-      // counted by the back-facing front face's own fragment (wedge_technique.cpp), the same
-      // snapped triangles, so a ray's entries and exits pair up exactly; a choice between the
-      // front plane and a side plane made from rounded intersection depths instead disagreed
-      // with the rasterized faces of the neighbouring wedge near their common edge and left
-      // +-255 streaks along it. Where the front rays cross (Figure 6) the front face is not the
-      // whole umbra quad, which is then counted as a hard quad instead: the entry counts 0.
-      const float z_face = row_depth + e.da * float(rx);
-      const float s_f = face == kFront && w.front_quad && z_face > stored ? 1.0f : 0.0f;
-      // Otherwise p_i = p_b, on the back plane or on a side plane (cancelled by the
-      // neighbour's entry, section 5): 0.
-      float s_i = 0.0f;
-      if (inside) {
-        s_i = screenIntensity(w.k, f, b, l, r);
-        if (w.smooth) s_i = smoothFalloff(s_i);
-        ++counts.inside;
-      } else if (s_f == 0.0f) {
-        continue;
-      }
-      li_row[x] = liAdd(li_row[x], int32_t(std::nearbyint(li_scale * (s_i - s_f))));
-      ++counts.writes;
+  forEachCoveredPixel(e, [&](int x, int y) {
+    ++counts.covered;
+    const size_t i = size_t(y) * size_t(target.stride) + size_t(x);
+    const float stored = target.depth[i];
+    if (!(stored > 0.0f)) return;
+    const float sx = float(x) + 0.5f, sy = float(y) + 0.5f;
+    // p_i is p itself exactly when p lies between the entry p_f and the exit p_b, that is on
+    // the inner side of every wedge plane. Deciding it from the plane values at p rather than
+    // from the depths of the intersection points makes the decision exact at shared side
+    // planes: the neighbour evaluates the same plane negated, so a point is inside exactly
+    // one of the two (comparing rounded intersection depths instead dropped or doubled the
+    // neighbour's contribution at points within a rounding error of the plane).
+    const float f = w.front.eval(sx, sy, stored), b = w.back.eval(sx, sy, stored);
+    const float l = w.left.eval(sx, sy, stored), r = w.right.eval(sx, sy, stored);
+    const bool inside = f >= 0.0f && b >= 0.0f && l >= 0.0f && r >= 0.0f;
+    // Entry intensity: 1 on the front plane, 0 on the back and side planes (section 5), where
+    // the rasterized face passes the depth test. Exits through the front plane (s_i = 1) are
+    // counted by the back-facing front face's own fragment (wedge_technique.cpp), the same
+    // snapped triangles, so a ray's entries and exits pair up exactly; a choice between the
+    // front plane and a side plane made from rounded intersection depths instead disagreed
+    // with the rasterized faces of the neighbouring wedge near their common edge and left
+    // +-255 streaks along it. Where the front rays cross (Figure 6) the front face is not the
+    // whole umbra quad, which is then counted as a hard quad instead: the entry counts 0.
+    const float z_face = triangleDepthAt(e, x, y);
+    const float s_f = face == kFront && w.front_quad && z_face > stored ? 1.0f : 0.0f;
+    // Otherwise p_i = p_b, on the back plane or on a side plane (cancelled by the
+    // neighbour's entry, section 5): 0.
+    float s_i = 0.0f;
+    if (inside) {
+      s_i = screenIntensity(w.k, f, b, l, r);
+      if (w.smooth) s_i = smoothFalloff(s_i);
+      ++counts.inside;
+    } else if (s_f == 0.0f) {
+      return;
     }
-  }
+    target.li[i] = liAdd(target.li[i], int32_t(std::nearbyint(li_scale * (s_i - s_f))));
+    ++counts.writes;
+  });
 }
 
 }  // namespace penumbra
