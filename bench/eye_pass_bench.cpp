@@ -9,29 +9,16 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <map>
-#include <mutex>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "bench_scenes.h"
 #include "core/parallel.h"
 #include "render/eye_pass.h"
-#include "scene/builtin_scenes.h"
 
 namespace penumbra {
 namespace {
-
-// Scenes are built once per process, before any timing loop: building `fractal` (terrain,
-// normals, adjacency) costs far more than a frame and is not what these benchmarks measure.
-const Scene& benchScene(const std::string& name) {
-  static std::mutex mutex;
-  static std::map<std::string, Scene> scenes;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = scenes.find(name);
-  if (it == scenes.end()) it = scenes.emplace(name, builtinScene(name)).first;
-  return it->second;
-}
 
 void eyePass(benchmark::State& state, const std::string& scene_name, int width, int height,
              bool simd) {

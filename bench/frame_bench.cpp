@@ -15,32 +15,20 @@
 
 #include <chrono>
 #include <map>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "bench_scenes.h"
 #include "core/parallel.h"
 #include "render/eye_pass.h"
 #include "render/frame.h"
 #include "render/stats_json.h"
-#include "scene/builtin_scenes.h"
 #include "shadows/technique.h"
 
 namespace penumbra {
 namespace {
-
-// Scenes are built once per process, before any timing loop (building `fractal` costs more
-// than rendering it).
-const Scene& benchScene(const std::string& name) {
-  static std::mutex mutex;
-  static std::map<std::string, Scene> scenes;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = scenes.find(name);
-  if (it == scenes.end()) it = scenes.emplace(name, builtinScene(name)).first;
-  return it->second;
-}
 
 // Sums Stats::time_ms per pass name over every iteration, keeping the first-seen order so the
 // counters read in pipeline order in the console.

@@ -17,32 +17,21 @@
 
 #include <chrono>
 #include <map>
-#include <mutex>
 #include <string>
 #include <vector>
 
+#include "bench_scenes.h"
 #include "core/parallel.h"
 #include "render/frame.h"
 #include "render/stats_json.h"
-#include "scene/builtin_scenes.h"
 #include "shadows/technique.h"
 
 namespace penumbra {
 namespace {
 
-// Built once per process, before any timing loop.
-const Scene& wedgeBenchScene(const std::string& name) {
-  static std::mutex mutex;
-  static std::map<std::string, Scene> scenes;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = scenes.find(name);
-  if (it == scenes.end()) it = scenes.emplace(name, builtinScene(name)).first;
-  return it->second;
-}
-
 void softShadowFrame(benchmark::State& state, const std::string& scene_name, int width, int height,
                      const TechniqueOptions& technique) {
-  const Scene& scene = wedgeBenchScene(scene_name);
+  const Scene& scene = benchScene(scene_name);
   FrameOptions options;
   options.width = width;
   options.height = height;
