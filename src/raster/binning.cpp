@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel.h"
 #include "raster/fixed_point.h"
 
 namespace penumbra {
@@ -44,34 +45,47 @@ bool tileRowSpan(const SetupTriangle& t, int ty, int& cx0, int& cx1) {
   return true;
 }
 
-template <class Fn>
-void forEachTileOf(const SetupTriangle& t, Fn&& fn) {
-  for (int ty = t.min_y >> kBinTileLevel; ty <= (t.max_y >> kBinTileLevel); ++ty) {
-    int cx0, cx1;
-    if (!tileRowSpan(t, ty, cx0, cx1)) continue;
-    for (int tx = cx0; tx <= cx1; ++tx) fn(ty, tx);
-  }
-}
-
 }  // namespace
 
-// Two sequential passes (count, then fill) over each triangle's tiles: linear in the number of
-// (triangle, tile) pairs, and each tile's list stays in triangle order, which makes depth ties
-// resolve the same way for any thread count.
+// Each triangle's tile-row spans are solved once, in parallel (they are most of the work),
+// then two sequential passes (count, then fill) over them: linear in the number of (triangle,
+// tile) pairs, and each tile's list stays in triangle order, which makes depth ties resolve the
+// same way for any thread count.
 TileBins binTriangles(const std::vector<SetupTriangle>& triangles, int width, int height) {
   TileBins bins;
   bins.tiles_x = (width + kBinTileSize - 1) / kBinTileSize;
   bins.tiles_y = (height + kBinTileSize - 1) / kBinTileSize;
   bins.offsets.assign(bins.tileCount() + 1, 0);
-  for (const SetupTriangle& t : triangles)
-    forEachTileOf(t, [&](int ty, int tx) { ++bins.offsets[size_t(ty) * bins.tiles_x + tx + 1]; });
+  // Spans of triangle i: tile rows first_row[i] .. + (span_begin[i + 1] - span_begin[i]) - 1.
+  const size_t n = triangles.size();
+  std::vector<uint32_t> span_begin(n + 1, 0);
+  for (size_t i = 0; i < n; ++i)
+    span_begin[i + 1] = span_begin[i] + uint32_t((triangles[i].max_y >> kBinTileLevel) -
+                                                 (triangles[i].min_y >> kBinTileLevel) + 1);
+  struct Span {
+    int32_t first, last;  // tile columns, first > last: none
+  };
+  std::vector<Span> spans(span_begin.back());
+  constexpr size_t kChunk = 256;
+  parallelFor((n + kChunk - 1) / kChunk, [&](size_t c) {
+    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+      const SetupTriangle& t = triangles[i];
+      Span* out = &spans[span_begin[i]];
+      for (int ty = t.min_y >> kBinTileLevel; ty <= (t.max_y >> kBinTileLevel); ++ty, ++out)
+        if (!tileRowSpan(t, ty, out->first, out->last)) *out = {1, 0};
+    }
+  });
+  auto forEachTileOf = [&](size_t i, auto&& fn) {
+    int ty = triangles[i].min_y >> kBinTileLevel;
+    for (uint32_t k = span_begin[i]; k < span_begin[i + 1]; ++k, ++ty)
+      for (int tx = spans[k].first; tx <= spans[k].last; ++tx) fn(size_t(ty) * bins.tiles_x + tx);
+  };
+  for (size_t i = 0; i < n; ++i) forEachTileOf(i, [&](size_t tile) { ++bins.offsets[tile + 1]; });
   for (size_t i = 1; i < bins.offsets.size(); ++i) bins.offsets[i] += bins.offsets[i - 1];
   bins.triangles.resize(bins.offsets.back());
   std::vector<uint32_t> cursor(bins.offsets.begin(), bins.offsets.end() - 1);
-  for (uint32_t i = 0; i < triangles.size(); ++i)
-    forEachTileOf(triangles[i], [&](int ty, int tx) {
-      bins.triangles[cursor[size_t(ty) * bins.tiles_x + tx]++] = i;
-    });
+  for (size_t i = 0; i < n; ++i)
+    forEachTileOf(i, [&](size_t tile) { bins.triangles[cursor[tile]++] = uint32_t(i); });
   return bins;
 }
 
