@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include "raster/binning.h"
 #include "raster/cull_tiles.h"
+#include "raster/triangle_setup.h"
 #include "raster_test_util.h"
 
 namespace penumbra {
@@ -66,9 +69,13 @@ TEST(RasterCullTiles, MergedWalkEqualsPerTileWalk) {
       e.x1 = std::min(e.x1, bx + kBinTileSize - 1);
       e.y1 = std::min(e.y1, by + kBinTileSize - 1);
 
+      // Edges that hold the whole rect (every edge function 0).
+      const SetupTriangle triangle{};
+
       Walk merged{std::vector<int>(size_t(kWidth) * kHeight, 0), {}};
+      TileEdges rect = e;
       forEachCullRect(
-          e, depth, level, decide,
+          triangle, rect, depth, level, decide,
           [&](const TileEdges& r, int code) {
             for (int y = r.y0; y <= r.y1; ++y)
               for (int x = r.x0; x <= r.x1; ++x) {
@@ -103,6 +110,54 @@ TEST(RasterCullTiles, MergedWalkEqualsPerTileWalk) {
       EXPECT_EQ(merged.tally.culled, reference.tally.culled) << "level " << level;
     }
   }
+}
+
+// Long slanted triangles, like shadow-volume quads and wedge faces, at any angle and across the
+// guard band.
+ClipTriangles slantedTriangles(int count, int width, int height, uint64_t seed) {
+  TestRandom random(seed);
+  ClipTriangles tris;
+  for (int t = 0; t < count; ++t) {
+    const double x = random.uniform(-100, width + 100), y = random.uniform(-100, height + 100);
+    const double angle = random.uniform(0, 6.2832), length = random.uniform(5, 900);
+    const double width_px = random.uniform(0.3, 40);
+    const double dx = std::cos(angle), dy = std::sin(angle);
+    tris.clip.push_back(testing::screenToClip(x, y, 0.5, width, height));
+    tris.clip.push_back(testing::screenToClip(x + dx * length, y + dy * length, 0.5, width, height));
+    tris.clip.push_back(testing::screenToClip(x + dx * length - dy * width_px,
+                                              y + dy * length + dx * width_px, 0.5, width, height));
+    tris.add(uint32_t(t * 3), uint32_t(t * 3 + 1), uint32_t(t * 3 + 2), t);
+  }
+  return tris;
+}
+
+// The binner hands a triangle to exactly the bin tiles where setupTileEdges finds it: the
+// passes' tile counters rely on it (forEachCullRect tallies a culled pair without setting up
+// its edges), and a missing tile would lose pixels.
+TEST(RasterCullTiles, BinnerHandsOutExactlyTheTilesTheEdgesMeet) {
+  constexpr int kWidth = 333, kHeight = 210;
+  const std::vector<SetupTriangle> setup =
+      setupTriangles(slantedTriangles(2000, kWidth, kHeight, 3), kWidth, kHeight);
+  const TileBins bins = binTriangles(setup, kWidth, kHeight);
+  size_t pairs = 0;
+  for (size_t tile = 0; tile < bins.tileCount(); ++tile) {
+    const int tx = int(tile % size_t(bins.tiles_x)), ty = int(tile / size_t(bins.tiles_x));
+    const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
+    const int x1 = std::min(kWidth, x0 + kBinTileSize) - 1;
+    const int y1 = std::min(kHeight, y0 + kBinTileSize) - 1;
+    std::vector<bool> binned(setup.size(), false);
+    for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k)
+      binned[bins.triangles[k]] = true;
+    for (size_t i = 0; i < setup.size(); ++i) {
+      TileEdges e;
+      const bool meets = setupTileEdges(setup[i], x0, y0, x1, y1, e);
+      // If it failed: a tile was handed a triangle it does not hold (counted as a culling test
+      // that no per-tile walk would make), or was not handed one it holds (lost pixels).
+      ASSERT_EQ(binned[i], meets) << "triangle " << i << " tile " << tx << "," << ty;
+      pairs += meets;
+    }
+  }
+  EXPECT_GT(pairs, 2000u);
 }
 
 }  // namespace

@@ -15,8 +15,11 @@ struct CullTally {
   uint64_t tested = 0, culled = 0;
 };
 
-// Walks the culling tiles of level `level` that the triangle rect of `e` touches (a culling
-// tile at least as large as the bin tile contains the rect whole). decide(sub, zmin, zmax), with
+// Walks the culling tiles of level `level` that the rect of `e` touches (a culling tile at least
+// as large as the bin tile contains the rect whole). `e` comes from setupTileRect: the triangle's
+// edges are set up (setupRectEdges) only once a tile of the rect survives the pre-test below.
+// The binner hands out only pairs whose edges meet the rect (binning.cpp), so the tallies do not
+// depend on whether the edges were set up. decide(sub, zmin, zmax), with
 // `sub` restricted to that culling tile's pixels and [zmin, zmax] its stored depth range, is the
 // papers' per-tile test: it returns a code, 0 to cull the tile, else what to draw there (for
 // passes with two parts, a bit per part). Then draw(rect, code) runs once per rectangle of
@@ -34,30 +37,29 @@ struct CullTally {
 // everything, each of them would have been culled, and they are tallied so without a test each
 // (most pairs of a long shadow quad or wedge face and a tile are culled whole).
 template <class Decide, class Draw>
-void forEachCullRect(const TileEdges& e, const DepthBuffer& depth, int level, Decide&& decide,
-                     Draw&& draw, CullTally& tally) {
+void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& depth, int level,
+                     Decide&& decide, Draw&& draw, CullTally& tally) {
+  const uint64_t tiles = uint64_t((e.x1 >> level) - (e.x0 >> level) + 1) *
+                         uint64_t((e.y1 >> level) - (e.y0 >> level) + 1);
+  auto cullAll = [&] {
+    tally.tested += tiles;
+    tally.culled += tiles;
+  };
   if (level >= kBinTileLevel) {
     const TileDepthRange& range = depth.tileRange(level);
     const int cx = e.x0 >> level, cy = e.y0 >> level;
     const int code = decide(e, range.zmin.at(cx, cy), range.zmax.at(cx, cy));
+    if (code == 0) return cullAll();
+    if (!setupRectEdges(t, e)) return;  // not handed out by the binner
     ++tally.tested;
-    if (code != 0) {
-      draw(e, code);
-    } else {
-      ++tally.culled;
-    }
+    draw(e, code);
     return;
   }
   const TileDepthRange& range = depth.tileRange(level);
   const TileDepthRange& bin = depth.tileRange(kBinTileLevel);
   const int bx = e.x0 >> kBinTileLevel, by = e.y0 >> kBinTileLevel;
-  if (decide(e, bin.zmin.at(bx, by), bin.zmax.at(bx, by)) == 0) {
-    const uint64_t tiles = uint64_t((e.x1 >> level) - (e.x0 >> level) + 1) *
-                           uint64_t((e.y1 >> level) - (e.y0 >> level) + 1);
-    tally.tested += tiles;
-    tally.culled += tiles;
-    return;
-  }
+  if (decide(e, bin.zmin.at(bx, by), bin.zmax.at(bx, by)) == 0) return cullAll();
+  if (!setupRectEdges(t, e)) return;  // not handed out by the binner
   const int size = 1 << level;
   const int cx_first = e.x0 >> level, cx_last = e.x1 >> level;
   struct Pending {

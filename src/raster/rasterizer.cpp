@@ -116,12 +116,12 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
     for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
-      if (!setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+      if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
       const bool zfail = (t.flags & kZFail) != 0;
       const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
       const DepthRule rule = zfail ? DepthRule::NotCloser : DepthRule::Closer;
       forEachCullRect(
-          e, depth, options.cull_level,
+          t, e, depth, options.cull_level,
           [&](const TileEdges& sub, float zmin, float zmax) {
             return options.tile_culling && depthRuleCulled(t, sub, zfail, zmin, zmax) ? 0 : 1;
           },
@@ -137,7 +137,7 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
 
 void forEachTriangleInTiles(
     const ClipTriangles& triangles, int width, int height,
-    const std::function<void(const TileVisit&, const SetupTriangle&, const TileEdges&)>& visit,
+    const std::function<void(const TileVisit&, const SetupTriangle&, TileEdges&)>& visit,
     Stats& stats) {
   const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
@@ -147,7 +147,7 @@ void forEachTriangleInTiles(
     for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
-      if (setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e)) visit(v, t, e);
+      if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) visit(v, t, e);
     }
   });
   stats.triangles += setup.size();

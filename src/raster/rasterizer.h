@@ -36,16 +36,18 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
 
 // The tile loop the passes above are built on, for passes with their own pixel kernels (penumbra
-// wedges): sets up and bins `triangles`, then for every (triangle, bin tile) pair the triangle
-// overlaps calls visit(tile_index, triangle, edges) on the worker owning that tile, in
-// triangle order within the tile. `visit` may only write pixels of its tile.
+// wedges): sets up and bins `triangles`, then for every (triangle, bin tile) pair the binner
+// hands out calls visit(tile, triangle, rect) on the worker owning that tile, in triangle order
+// within the tile. `rect` comes from setupTileRect: the visitor sets up the edges
+// (setupRectEdges, or forEachCullRect after its culling pre-test), which may still find that
+// the triangle misses the rect. `visit` may only write pixels of its tile.
 struct TileVisit {
   size_t tile;                    // bin tile index, row-major
   int x0, y0, x1, y1;             // the bin tile's pixels, inclusive
 };
 void forEachTriangleInTiles(
     const ClipTriangles& triangles, int width, int height,
-    const std::function<void(const TileVisit&, const SetupTriangle&, const TileEdges&)>& visit,
+    const std::function<void(const TileVisit&, const SetupTriangle&, TileEdges&)>& visit,
     Stats& stats);
 
 }  // namespace penumbra

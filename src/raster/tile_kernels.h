@@ -2,6 +2,8 @@
 // Per-(triangle, tile) pixel kernels: the hot loops of every pass. Each kernel has a SIMD
 // version (Highway, 4 to 16 pixels per step, dispatched at run time) and a scalar twin that
 // follows the same steps and must give bit-identical buffers and counts (tests check it).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "raster/triangle_setup.h"
@@ -18,6 +20,43 @@ struct TileEdges {
   float dc, da, db;
   int tx0, ty0;          // tile origin pixel
   int x0, y0, x1, y1;    // pixels to visit, inclusive: triangle box within the tile
+};
+
+// The columns of one row of a rect worth visiting: those where every edge can be >= 0. Per edge
+// the inside columns are a half-line, solved in double and rounded outwards, so [x_lo, x_hi]
+// holds every covered pixel and at most one uncovered pixel at either end (the SIMD kernels
+// still test every pixel: the span only skips vectors that would find none inside). Shadow
+// volume quads and wedge faces are long and slanted: over their whole rects, 61 % of the SIMD
+// steps of the umbra pass found no pixel inside (columns, 1920x1080).
+class RowSpans {
+ public:
+  explicit RowSpans(const TileEdges& e) : e_(e) {
+    for (int i = 0; i < 3; ++i) inverse_dx_[i] = e.dx[i] != 0 ? 1.0 / double(e.dx[i]) : 0.0;
+  }
+  // Row whose edge values at the tile origin's column are r[]: false when no pixel of it can
+  // be inside, else the image columns [x_lo, x_hi] within [e.x0, e.x1].
+  bool span(const int32_t (&r)[3], int& x_lo, int& x_hi) const {
+    double lo = double(e_.x0 - e_.tx0), hi = double(e_.x1 - e_.tx0);
+    for (int i = 0; i < 3; ++i) {
+      if (e_.dx[i] == 0) {
+        if (r[i] < 0) return false;
+        continue;
+      }
+      const double zero = -double(r[i]) * inverse_dx_[i];  // where the edge value is 0
+      if (e_.dx[i] > 0)
+        lo = std::max(lo, std::floor(zero));
+      else
+        hi = std::min(hi, std::ceil(zero));
+    }
+    if (!(lo <= hi)) return false;
+    x_lo = e_.tx0 + int(lo);
+    x_hi = e_.tx0 + int(hi);
+    return true;
+  }
+
+ private:
+  const TileEdges& e_;
+  double inverse_dx_[3];
 };
 
 // The pixel walk the scalar twins share: calls fn(x, y) for every pixel of the rect inside all
@@ -45,6 +84,11 @@ inline float triangleDepthAt(const TileEdges& e, int x, int y) {
 // Prepares `t` for the tile whose pixels are [tx0, tx1] x [ty0, ty1]; false when the triangle
 // misses the tile entirely (an edge is negative at all four rect corners).
 bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out);
+// The same in two steps, for passes that can cull the pair before its edges are set up: first
+// the rect (the triangle's box within the tile), tile origin and depth (false: the box misses
+// the tile), then the edges over that rect (false: an edge excludes the whole rect).
+bool setupTileRect(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out);
+bool setupRectEdges(const SetupTriangle& t, TileEdges& rect);
 
 // Where a kernel reads and writes: row-major buffers of the full image.
 // The depth target may be a tile's own copy: pixel (x, y) of the image is element

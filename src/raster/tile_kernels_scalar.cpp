@@ -5,7 +5,7 @@
 
 namespace penumbra {
 
-bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out) {
+bool setupTileRect(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out) {
   out.x0 = std::max(tx0, t.min_x);
   out.y0 = std::max(ty0, t.min_y);
   out.x1 = std::min(tx1, t.max_x);
@@ -13,6 +13,15 @@ bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, 
   if (out.x0 > out.x1 || out.y0 > out.y1) return false;
   out.tx0 = tx0;
   out.ty0 = ty0;
+  // Depth at the tile origin's pixel centre in double, then float steps from there: keeps the
+  // float terms small so the float evaluation stays within a few ulps of the plane.
+  out.dc = float(t.a * (tx0 + 0.5) + t.b * (ty0 + 0.5) + t.c);
+  out.da = float(t.a);
+  out.db = float(t.b);
+  return true;
+}
+
+bool setupRectEdges(const SetupTriangle& t, TileEdges& out) {
   for (int i = 0; i < 3; ++i) {
     const int64_t A = t.A[i], B = t.B[i], C = t.C[i];
     auto edge = [&](int x, int y) { return A * pixelCentre(x) + B * pixelCentre(y) + C; };
@@ -25,16 +34,15 @@ bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, 
       continue;
     }
     // The edge crosses the rect, which lies in one bin tile: int32 holds it (fixed_point.h).
-    out.e0[i] = int32_t(edge(tx0, ty0));
+    out.e0[i] = int32_t(edge(out.tx0, out.ty0));
     out.dx[i] = int32_t(A * kSubpixelSteps);
     out.dy[i] = int32_t(B * kSubpixelSteps);
   }
-  // Depth at the tile origin's pixel centre in double, then float steps from there: keeps the
-  // float terms small so the float evaluation stays within a few ulps of the plane.
-  out.dc = float(t.a * (tx0 + 0.5) + t.b * (ty0 + 0.5) + t.c);
-  out.da = float(t.a);
-  out.db = float(t.b);
   return true;
+}
+
+bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, TileEdges& out) {
+  return setupTileRect(t, tx0, ty0, tx1, ty1, out) && setupRectEdges(t, out);
 }
 
 void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget& target,

@@ -77,15 +77,18 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
   const auto add = hn::Set(di, contribution);
   const auto da = hn::Set(df, e.da);
   const auto zero = hn::Zero(df);
+  const RowSpans spans(e);
   for (int y = e.y0; y <= e.y1; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
+    int x_lo, x_hi;
+    if (!spans.span(row.start, x_lo, x_hi)) continue;
     const float* depth_row = target.depth + size_t(y) * target.stride;
     int32_t* stencil_row = target.stencil + size_t(y) * target.stride;
-    for (int x = e.x0; x <= e.x1; x += lanes) {
+    for (int x = x_lo; x <= x_hi; x += lanes) {
       const int rx = x - e.tx0;
-      const auto in_row = hn::FirstN(di, size_t(e.x1 - x + 1));
+      const auto in_row = hn::FirstN(di, size_t(x_hi - x + 1));
       const auto inside_i = hn::And(insideMask(di, e, row, rx, lane_step), in_row);
       if (hn::AllFalse(di, inside_i)) continue;
       const auto inside = hn::RebindMask(df, inside_i);

@@ -44,17 +44,20 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
   const ScreenWedge* w = work.wedge;
   HWY_ALIGN int32_t values[kMaxLanes];
   HWY_ALIGN int32_t writes[kMaxLanes];
+  const RowSpans spans(e);
   for (int y = e.y0; y <= e.y1; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const auto sy = hn::Set(df, float(y) + 0.5f);
     const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
                   r2 = e.e0[2] + e.dy[2] * ry;
+    int x_lo, x_hi;
+    if (!spans.span({r0, r1, r2}, x_lo, x_hi)) continue;
     const float* depth_row = target.depth + size_t(y) * target.stride;
     int16_t* li_row = target.li + size_t(y) * target.stride;
-    for (int x = e.x0; x <= e.x1; x += lanes) {
+    for (int x = x_lo; x <= x_hi; x += lanes) {
       const int rx = x - e.tx0;
-      auto inside_i = hn::FirstN(di, size_t(e.x1 - x + 1));
+      auto inside_i = hn::FirstN(di, size_t(x_hi - x + 1));
       inside_i = hn::And(inside_i, hn::Gt(hn::Add(hn::Set(di, r0 + e.dx[0] * rx), lane_step[0]), minus_one));
       inside_i = hn::And(inside_i, hn::Gt(hn::Add(hn::Set(di, r1 + e.dx[1] * rx), lane_step[1]), minus_one));
       inside_i = hn::And(inside_i, hn::Gt(hn::Add(hn::Set(di, r2 + e.dx[2] * rx), lane_step[2]), minus_one));
@@ -113,7 +116,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
       if (hn::AllFalse(df, write)) continue;
       hn::Store(value, di, values);
       hn::Store(hn::VecFromMask(di, hn::RebindMask(di, write)), di, writes);
-      const int n = std::min(lanes, e.x1 - x + 1);
+      const int n = std::min(lanes, x_hi - x + 1);
       for (int i = 0; i < n; ++i) {
         if (writes[i] == 0) continue;
         li_row[x + i] = liAdd(li_row[x + i], values[i]);

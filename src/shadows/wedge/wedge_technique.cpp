@@ -110,7 +110,7 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
   forEachTriangleInTiles(
       frame.triangles, width, height,
-      [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
+      [&](const TileVisit& v, const SetupTriangle& t, TileEdges& e) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         if (!penumbraFace(role, t)) return;
         const ScreenWedge& wedge = frame.screen[size_t(role.wedge)];
@@ -119,7 +119,7 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
         k.wedge = &wedge;
         k.li_scale = float(full);
         forEachCullRect(
-            e, eye.depth, options.tile_level,
+            t, e, eye.depth, options.tile_level,
             [&](const TileEdges& sub, float zmin, float zmax) {
               return penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax) ? 0
                                                                                               : 1;
@@ -141,7 +141,7 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
   forEachTriangleInTiles(
       frame.triangles, width, height,
-      [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
+      [&](const TileVisit& v, const SetupTriangle& t, TileEdges& e) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         const bool has_penumbra = penumbraFace(role, t);
         if (role.umbra_weight == 0 && !has_penumbra) return;
@@ -150,7 +150,7 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
         // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra.
         constexpr int kUmbra = 1, kPenumbra = 2;
         forEachCullRect(
-            e, eye.depth, options.tile_level,
+            t, e, eye.depth, options.tile_level,
             [&](const TileEdges& sub, float zmin, float zmax) {
               int parts = 0;
               if (role.umbra_weight != 0 &&
@@ -188,9 +188,10 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
   std::vector<TileWork> work(binTileCount(width, height));
   forEachTriangleInTiles(
       frame.triangles, width, height,
-      [&](const TileVisit& v, const SetupTriangle& t, const TileEdges& e) {
+      [&](const TileVisit& v, const SetupTriangle& t, TileEdges& e) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         TileWork& tw = work[v.tile];
+        if (!setupRectEdges(t, e)) return;
         ++tw.tally.tested;
         const bool entry = role.wedge != kNoWedge && t.facing * role.face_sign > 0;
         if (!entry) {
