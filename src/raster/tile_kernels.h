@@ -103,6 +103,7 @@ struct StencilTarget {
   const float* depth;
   int32_t* stencil;
   int stride;
+  int x0 = 0, y0 = 0;  // as DepthTarget
 };
 
 enum class DepthRule : uint8_t {

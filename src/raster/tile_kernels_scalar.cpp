@@ -63,7 +63,7 @@ void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rul
                          const StencilTarget& target, KernelCounts& counts) {
   forEachCoveredPixel(e, [&](int x, int y) {
     ++counts.covered;
-    const size_t i = size_t(y) * size_t(target.stride) + size_t(x);
+    const size_t i = size_t(y - target.y0) * size_t(target.stride) + size_t(x - target.x0);
     const float stored = target.depth[i];
     const float d = triangleDepthAt(e, x, y);
     const bool pass = rule == DepthRule::Closer ? d > stored : d <= stored;

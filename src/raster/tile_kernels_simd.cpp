@@ -84,8 +84,8 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
     const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
     int x_lo, x_hi;
     if (!spans.span(row.start, x_lo, x_hi)) continue;
-    const float* depth_row = target.depth + size_t(y) * target.stride;
-    int32_t* stencil_row = target.stencil + size_t(y) * target.stride;
+    const float* depth_row = target.depth + size_t(y - target.y0) * target.stride;
+    int32_t* stencil_row = target.stencil + size_t(y - target.y0) * target.stride;
     for (int x = x_lo; x <= x_hi; x += lanes) {
       const int rx = x - e.tx0;
       const auto in_row = hn::FirstN(di, size_t(x_hi - x + 1));
@@ -94,14 +94,14 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
       const auto inside = hn::RebindMask(df, inside_i);
       counts.covered += hn::CountTrue(df, inside);
       const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
-      const auto stored = hn::MaskedLoad(inside, df, depth_row + x);
+      const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
       const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
       const auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
       if (hn::AllFalse(df, write)) continue;
       counts.writes += hn::CountTrue(df, write);
       const auto write_i = hn::RebindMask(di, write);
-      const auto s = hn::MaskedLoad(write_i, di, stencil_row + x);
-      hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + x);
+      const auto s = hn::MaskedLoad(write_i, di, stencil_row + (x - target.x0));
+      hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + (x - target.x0));
     }
   }
 }
