@@ -56,7 +56,7 @@ TEST(RasterCullTiles, MergedWalkEqualsPerTileWalk) {
         (void)zmin;
         return parts;
       };
-      // A rect within one bin tile, as forEachTriangleInTiles hands them out.
+      // A rect within one bin tile, as the binner hands them out.
       const int bx = int(random.uniform(0, 7)) * kBinTileSize;
       const int by = int(random.uniform(0, 5)) * kBinTileSize;
       TileEdges e{};

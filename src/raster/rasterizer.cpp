@@ -9,6 +9,7 @@
 #include "raster/binning.h"
 #include "raster/cull_tiles.h"
 #include "raster/fixed_point.h"
+#include "raster/tile_copy.h"
 #include "raster/tile_kernels.h"
 
 namespace penumbra {
@@ -19,37 +20,11 @@ struct TileCounts {
   CullTally tally;
 };
 
-struct TileBox {
-  int x0, y0, x1, y1;  // inclusive pixels
-};
-
 TileBox tileBox(const TileBins& bins, size_t tile, int width, int height) {
   const int tx = int(tile % size_t(bins.tiles_x)), ty = int(tile / size_t(bins.tiles_x));
   const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
   return {x0, y0, std::min(width, x0 + kBinTileSize) - 1, std::min(height, y0 + kBinTileSize) - 1};
 }
-
-// A bin tile's pixels of an image, copied into kBinTileSize-wide rows that stay in L1 while
-// the tile's triangles are drawn.
-template <class T>
-class TileCopy {
- public:
-  TileCopy(const Image<T>& image, const TileBox& box) {
-    for (int y = box.y0; y <= box.y1; ++y)
-      std::copy_n(&image.at(box.x0, y), box.x1 - box.x0 + 1,
-                  pixels_ + (y - box.y0) * kBinTileSize);
-  }
-  explicit TileCopy(T fill) { std::fill_n(pixels_, kBinTileSize * kBinTileSize, fill); }
-  T* data() { return pixels_; }
-  void storeTo(Image<T>& image, const TileBox& box) const {
-    for (int y = box.y0; y <= box.y1; ++y)
-      std::copy_n(pixels_ + (y - box.y0) * kBinTileSize, box.x1 - box.x0 + 1,
-                  &image.at(box.x0, y));
-  }
-
- private:
-  alignas(64) T pixels_[kBinTileSize * kBinTileSize];
-};
 
 void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are_stencil) {
   for (const TileCounts& t : tiles) {
@@ -161,20 +136,15 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
   stats.triangles += setup.size();
 }
 
-void forEachTriangleInTiles(
-    const ClipTriangles& triangles, int width, int height,
-    const std::function<void(const TileVisit&, const SetupTriangle&, TileEdges&)>& visit,
-    Stats& stats) {
+void forEachBinTile(const ClipTriangles& triangles, int width, int height,
+                    const std::function<void(const TileTriangles&)>& visit, Stats& stats) {
   const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
   parallelFor(bins.tileCount(), [&](size_t tile) {
-    const TileBox box = tileBox(bins, tile, width, height);
-    const TileVisit v{tile, box.x0, box.y0, box.x1, box.y1};
-    for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
-      const SetupTriangle& t = setup[bins.triangles[k]];
-      TileEdges e;
-      if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) visit(v, t, e);
-    }
+    if (bins.offsets[tile] == bins.offsets[tile + 1]) return;
+    visit(TileTriangles(tile, tileBox(bins, tile, width, height), setup,
+                        bins.triangles.data() + bins.offsets[tile],
+                        bins.triangles.data() + bins.offsets[tile + 1]));
   });
   stats.triangles += setup.size();
 }

@@ -2,10 +2,12 @@
 // The two passes built on the tile kernels: depth (eye pass) and stencil (shadow volumes).
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "core/image.h"
 #include "core/stats.h"
 #include "raster/depth_buffer.h"
+#include "raster/tile_copy.h"
 #include "raster/tile_kernels.h"
 #include "raster/triangle_setup.h"
 
@@ -36,18 +38,33 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
 
 // The tile loop the passes above are built on, for passes with their own pixel kernels (penumbra
-// wedges): sets up and bins `triangles`, then for every (triangle, bin tile) pair the binner
-// hands out calls visit(tile, triangle, rect) on the worker owning that tile, in triangle order
-// within the tile. `rect` comes from setupTileRect: the visitor sets up the edges
-// (setupRectEdges, or forEachCullRect after its culling pre-test), which may still find that
-// the triangle misses the rect. `visit` may only write pixels of its tile.
-struct TileVisit {
-  size_t tile;                    // bin tile index, row-major
-  int x0, y0, x1, y1;             // the bin tile's pixels, inclusive
+// wedges): sets up and bins `triangles`, then calls visit(tile) for every bin tile that holds a
+// triangle, on the worker owning that tile. visit may only write pixels of its tile.
+class TileTriangles {
+ public:
+  TileTriangles(size_t index, const TileBox& box, const std::vector<SetupTriangle>& setup,
+                const uint32_t* begin, const uint32_t* end)
+      : index_(index), box_(box), setup_(&setup), begin_(begin), end_(end) {}
+  size_t index() const { return index_; }  // bin tile index, row-major
+  const TileBox& box() const { return box_; }
+  // fn(triangle, rect) for the tile's triangles in input order; `rect` comes from setupTileRect:
+  // fn sets up the edges (setupRectEdges, or forEachCullRect after its culling pre-test).
+  template <class Fn>
+  void forEach(Fn&& fn) const {
+    for (const uint32_t* k = begin_; k != end_; ++k) {
+      const SetupTriangle& t = (*setup_)[*k];
+      TileEdges e;
+      if (setupTileRect(t, box_.x0, box_.y0, box_.x1, box_.y1, e)) fn(t, e);
+    }
+  }
+
+ private:
+  size_t index_;
+  TileBox box_;
+  const std::vector<SetupTriangle>* setup_;
+  const uint32_t *begin_, *end_;
 };
-void forEachTriangleInTiles(
-    const ClipTriangles& triangles, int width, int height,
-    const std::function<void(const TileVisit&, const SetupTriangle&, TileEdges&)>& visit,
-    Stats& stats);
+void forEachBinTile(const ClipTriangles& triangles, int width, int height,
+                    const std::function<void(const TileTriangles&)>& visit, Stats& stats);
 
 }  // namespace penumbra

@@ -10,7 +10,7 @@ void wedge2002Kernel(const TileEdges& e, const ScreenWedge& w, int face, float l
                      const WedgeKernelTarget& target, WedgeKernelCounts& counts) {
   forEachCoveredPixel(e, [&](int x, int y) {
     ++counts.covered;
-    const size_t i = size_t(y) * size_t(target.stride) + size_t(x);
+    const size_t i = target.index(x, y);
     const float stored = target.depth[i];
     if (!(stored > 0.0f)) return;
     const float sx = float(x) + 0.5f, sy = float(y) + 0.5f;

@@ -6,6 +6,7 @@
 // rasterizePenumbra). The three-pass implementation uses it with one part at a time, the
 // single-pass implementation with both (section 6.2). A SIMD version (Highway) and a scalar
 // twin with the same steps give identical LI buffers and counts.
+#include <cstddef>
 #include <cstdint>
 
 #include "raster/tile_kernels.h"
@@ -14,10 +15,16 @@
 
 namespace penumbra {
 
+// Where the kernels read depth and add to the LI buffer: pixel (x, y) of the image is element
+// (y - y0) * stride + (x - x0), the whole image or one tile's copy (raster/tile_copy.h).
 struct WedgeKernelTarget {
   const float* depth;
   int16_t* li;
   int stride;
+  int x0 = 0, y0 = 0;
+  size_t index(int x, int y) const {
+    return size_t(y - y0) * size_t(stride) + size_t(x - x0);
+  }
 };
 
 struct WedgeKernelWork {

@@ -9,7 +9,7 @@ void wedgeKernelScalar(const TileEdges& e, const WedgeKernelWork& work,
   const ScreenWedge* w = work.wedge;
   forEachCoveredPixel(e, [&](int x, int y) {
     ++counts.covered;
-    const size_t i = size_t(y) * size_t(target.stride) + size_t(x);
+    const size_t i = target.index(x, y);
     const float stored = target.depth[i];
     if (!(stored > 0.0f)) return;  // background: nothing to shadow
     int32_t value = 0;

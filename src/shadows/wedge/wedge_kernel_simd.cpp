@@ -53,8 +53,8 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
                   r2 = e.e0[2] + e.dy[2] * ry;
     int x_lo, x_hi;
     if (!spans.span({r0, r1, r2}, x_lo, x_hi)) continue;
-    const float* depth_row = target.depth + size_t(y) * target.stride;
-    int16_t* li_row = target.li + size_t(y) * target.stride;
+    const float* depth_row = target.depth + target.index(target.x0, y);
+    int16_t* li_row = target.li + target.index(target.x0, y);
     for (int x = x_lo; x <= x_hi; x += lanes) {
       const int rx = x - e.tx0;
       auto inside_i = hn::FirstN(di, size_t(x_hi - x + 1));
@@ -64,7 +64,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
       if (hn::AllFalse(di, inside_i)) continue;
       const auto covered = hn::RebindMask(df, inside_i);
       counts.covered += hn::CountTrue(df, covered);
-      const auto stored = hn::MaskedLoad(covered, df, depth_row + x);
+      const auto stored = hn::MaskedLoad(covered, df, depth_row + (x - target.x0));
       const auto surface = hn::And(covered, hn::Gt(stored, zero));
       if (hn::AllFalse(df, surface)) continue;
       auto value = hn::Zero(di);
@@ -119,7 +119,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
       const int n = std::min(lanes, x_hi - x + 1);
       for (int i = 0; i < n; ++i) {
         if (writes[i] == 0) continue;
-        li_row[x + i] = liAdd(li_row[x + i], values[i]);
+        li_row[x - target.x0 + i] = liAdd(li_row[x - target.x0 + i], values[i]);
         ++counts.writes;
       }
     }

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/parallel.h"
@@ -23,6 +24,7 @@
 #include "raster/cull_tiles.h"
 #include "raster/fixed_point.h"
 #include "raster/rasterizer.h"
+#include "raster/tile_copy.h"
 #include "shadows/facing_away.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
@@ -45,7 +47,7 @@ std::vector<WedgeCullPlanes> cullPlanes(const WedgeFrame& frame, int width, int 
   return planes;
 }
 
-// One counter set per bin tile (forEachTriangleInTiles hands out bin tile indices), summed in
+// One counter set per bin tile (forEachBinTile hands out bin tile indices), summed in
 // tile order so counts do not depend on the thread count.
 size_t binTileCount(int width, int height) {
   return size_t((width + kBinTileSize - 1) / kBinTileSize) *
@@ -102,21 +104,53 @@ void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& option
   });
 }
 
+// The scaffolding of the wedge passes: for every bin tile that holds a triangle, on the worker
+// owning it, fn(triangle, rect, target, tile_work) for its triangles in input order, where
+// target() gives the tile's depth and LI in L1 copies (raster/tile_copy.h), made on first use
+// and the LI stored back at the end of the tile. Counters are summed in tile order.
+template <class Fn>
+void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuffer& li,
+                          Stats& stats, Fn&& fn) {
+  const int width = li.width(), height = li.height();
+  std::vector<TileWork> work(binTileCount(width, height));
+  struct Copies {
+    Copies(const Image<float>& depth_image, const LiBuffer& li_image, const TileBox& box)
+        : depth(depth_image, box), li(li_image, box) {}
+    TileCopy<float> depth;
+    TileCopy<int16_t> li;
+  };
+  forEachBinTile(
+      frame.triangles, width, height,
+      [&](const TileTriangles& tile) {
+        const TileBox& box = tile.box();
+        std::optional<Copies> copies;
+        WedgeKernelTarget tile_target{nullptr, nullptr, kBinTileSize, box.x0, box.y0};
+        auto target = [&]() -> const WedgeKernelTarget& {
+          if (!copies) {
+            copies.emplace(eye.depth.depth, li, box);
+            tile_target.depth = copies->depth.data();
+            tile_target.li = copies->li.data();
+          }
+          return tile_target;
+        };
+        TileWork& tw = work[tile.index()];
+        tile.forEach([&](const SetupTriangle& t, TileEdges& e) { fn(t, e, target, tw); });
+        if (copies) copies->li.storeTo(li, box);
+      },
+      stats);
+  addTileWork(work, stats);
+}
+
 void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
-  const int width = li.width(), height = li.height();
-  const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
-  std::vector<TileWork> work(binTileCount(width, height));
-  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
-  forEachTriangleInTiles(
-      frame.triangles, width, height,
-      [&](const TileVisit& v, const SetupTriangle& t, TileEdges& e) {
+  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
+  forEachWedgeTriangle(
+      frame, eye, li, stats,
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         if (!penumbraFace(role, t)) return;
-        const ScreenWedge& wedge = frame.screen[size_t(role.wedge)];
-        TileWork& tw = work[v.tile];
         WedgeKernelWork k;
-        k.wedge = &wedge;
+        k.wedge = &frame.screen[size_t(role.wedge)];
         k.li_scale = float(full);
         forEachCullRect(
             t, e, eye.depth, options.tile_level,
@@ -125,28 +159,22 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
                                                                                               : 1;
             },
             [&](const TileEdges& rect, int) {
-              wedgeKernel(rect, k, target, tw.penumbra, options.simd);
+              wedgeKernel(rect, k, target(), tw.penumbra, options.simd);
             },
             tw.tally);
-      },
-      stats);
-  addTileWork(work, stats);
+      });
 }
 
 void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const EyeBuffers& eye,
                 int full, LiBuffer& li, Stats& stats) {
-  const int width = li.width(), height = li.height();
-  const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
-  std::vector<TileWork> work(binTileCount(width, height));
-  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, width, height);
-  forEachTriangleInTiles(
-      frame.triangles, width, height,
-      [&](const TileVisit& v, const SetupTriangle& t, TileEdges& e) {
+  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
+  forEachWedgeTriangle(
+      frame, eye, li, stats,
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         const bool has_penumbra = penumbraFace(role, t);
         if (role.umbra_weight == 0 && !has_penumbra) return;
         const ScreenWedge* wedge = has_penumbra ? &frame.screen[size_t(role.wedge)] : nullptr;
-        TileWork& tw = work[v.tile];
         // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra.
         constexpr int kUmbra = 1, kPenumbra = 2;
         forEachCullRect(
@@ -172,25 +200,19 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
               if (parts & kPenumbra) k.wedge = wedge;
               // One depth read per pixel for both parts: count it under the penumbra when
               // that part runs, else under the umbra.
-              wedgeKernel(rect, k, target, k.wedge != nullptr ? tw.penumbra : tw.umbra,
+              wedgeKernel(rect, k, target(), k.wedge != nullptr ? tw.penumbra : tw.umbra,
                           options.simd);
             },
             tw.tally);
-      },
-      stats);
-  addTileWork(work, stats);
+      });
 }
 
 void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
-  const int width = li.width(), height = li.height();
-  const WedgeKernelTarget target{eye.depth.depth.data(), li.data(), width};
-  std::vector<TileWork> work(binTileCount(width, height));
-  forEachTriangleInTiles(
-      frame.triangles, width, height,
-      [&](const TileVisit& v, const SetupTriangle& t, TileEdges& e) {
+  forEachWedgeTriangle(
+      frame, eye, li, stats,
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
-        TileWork& tw = work[v.tile];
         if (!setupRectEdges(t, e)) return;
         ++tw.tally.tested;
         const bool entry = role.wedge != kNoWedge && t.facing * role.face_sign > 0;
@@ -205,14 +227,12 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
           WedgeKernelWork k;
           k.umbra_value = umbraValue(role, t, full);
           k.rule = DepthRule::Closer;
-          wedgeKernel(e, k, target, tw.umbra, options.simd);
+          wedgeKernel(e, k, target(), tw.umbra, options.simd);
           return;
         }
-        wedge2002Kernel(e, frame.screen[size_t(role.wedge)], role.face, float(full), target,
+        wedge2002Kernel(e, frame.screen[size_t(role.wedge)], role.face, float(full), target(),
                         tw.penumbra);
-      },
-      stats);
-  addTileWork(work, stats);
+      });
 }
 
 }  // namespace
