@@ -98,6 +98,8 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
   PENUMBRA_CHECK(stencil.width() == width && stencil.height() == height,
                  "stencil {}x{} does not match depth {}x{}", stencil.width(), stencil.height(),
                  width, height);
+  PENUMBRA_DCHECK(std::all_of(stencil.data(), stencil.data() + stencil.size(),
+                              [](int32_t s) { return s == 0; }));
   const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
   std::vector<TileCounts> counts(bins.tileCount());
@@ -109,7 +111,7 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
     // place, a tile's rows are one image row apart, which at 1920 (or 640) pixels is a multiple
     // of 512 bytes: its 32 rows of depth and stencil fall into a sixteenth of the L1 cache sets.
     TileCopy<float> tile_depth(depth.depth, box);
-    TileCopy<int32_t> tile_stencil(stencil, box);
+    TileCopy<int32_t> tile_stencil(0);  // the caller cleared the stencil: nothing to read
     StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};
     target.x0 = box.x0;
     target.y0 = box.y0;

@@ -33,7 +33,8 @@ struct StencilOptions {
 // a signed multiplicity w for a volume polygon whose front side faces out of the volume; the
 // added value is w for front-facing / -w for back-facing with z-pass, negated with z-fail
 // (flag kZFail), so a pixel's sum counts the volumes its point is inside. The stencil must be
-// sized like the depth and cleared by the caller.
+// sized like the depth and all zero (the caller clears it; tiles are counted from zero in
+// copies of their own, which are stored back, so earlier contents would be lost).
 void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
 
