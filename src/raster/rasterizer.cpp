@@ -139,8 +139,11 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
 }
 
 void forEachBinTile(const ClipTriangles& triangles, int width, int height,
+                    const std::function<bool(const SetupTriangle&)>& keep,
                     const std::function<void(const TileTriangles&)>& visit, Stats& stats) {
-  const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
+  std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
+  stats.triangles += setup.size();
+  std::erase_if(setup, [&](const SetupTriangle& t) { return !keep(t); });
   const TileBins bins = binTriangles(setup, width, height);
   parallelFor(bins.tileCount(), [&](size_t tile) {
     if (bins.offsets[tile] == bins.offsets[tile + 1]) return;
@@ -148,7 +151,6 @@ void forEachBinTile(const ClipTriangles& triangles, int width, int height,
                         bins.triangles.data() + bins.offsets[tile],
                         bins.triangles.data() + bins.offsets[tile + 1]));
   });
-  stats.triangles += setup.size();
 }
 
 }  // namespace penumbra

@@ -39,8 +39,10 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
 
 // The tile loop the passes above are built on, for passes with their own pixel kernels (penumbra
-// wedges): sets up and bins `triangles`, then calls visit(tile) for every bin tile that holds a
-// triangle, on the worker owning that tile. visit may only write pixels of its tile.
+// wedges): sets up `triangles`, bins those keep(triangle) accepts (a pass that draws only some,
+// such as front-facing wedge faces, bins only those), then calls visit(tile) for every bin tile
+// that holds a triangle, on the worker owning that tile. visit may only write pixels of its
+// tile.
 class TileTriangles {
  public:
   TileTriangles(size_t index, const TileBox& box, const std::vector<SetupTriangle>& setup,
@@ -66,6 +68,7 @@ class TileTriangles {
   const uint32_t *begin_, *end_;
 };
 void forEachBinTile(const ClipTriangles& triangles, int width, int height,
+                    const std::function<bool(const SetupTriangle&)>& keep,
                     const std::function<void(const TileTriangles&)>& visit, Stats& stats);
 
 }  // namespace penumbra

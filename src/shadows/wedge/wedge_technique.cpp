@@ -104,13 +104,14 @@ void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& option
   });
 }
 
-// The scaffolding of the wedge passes: for every bin tile that holds a triangle, on the worker
-// owning it, fn(triangle, rect, target, tile_work) for its triangles in input order, where
+// The scaffolding of the wedge passes: for every bin tile that holds a triangle the pass draws
+// (keep(role, triangle)), on the worker owning it, fn(triangle, rect, target, tile_work) for
+// those triangles in input order, where
 // target() gives the tile's depth and LI in L1 copies (raster/tile_copy.h), made on first use
 // and the LI stored back at the end of the tile. Counters are summed in tile order.
-template <class Fn>
+template <class Keep, class Fn>
 void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuffer& li,
-                          Stats& stats, Fn&& fn) {
+                          Stats& stats, Keep&& keep, Fn&& fn) {
   const int width = li.width(), height = li.height();
   std::vector<TileWork> work(binTileCount(width, height));
   struct Copies {
@@ -121,6 +122,7 @@ void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuff
   };
   forEachBinTile(
       frame.triangles, width, height,
+      [&](const SetupTriangle& t) { return keep(frame.roles[size_t(t.payload)], t); },
       [&](const TileTriangles& tile) {
         const TileBox& box = tile.box();
         std::optional<Copies> copies;
@@ -145,10 +147,9 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   forEachWedgeTriangle(
-      frame, eye, li, stats,
+      frame, eye, li, stats, penumbraFace,
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
-        if (!penumbraFace(role, t)) return;
         WedgeKernelWork k;
         k.wedge = &frame.screen[size_t(role.wedge)];
         k.li_scale = float(full);
@@ -170,10 +171,12 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   forEachWedgeTriangle(
       frame, eye, li, stats,
+      [](const WedgeRole& role, const SetupTriangle& t) {
+        return role.umbra_weight != 0 || penumbraFace(role, t);
+      },
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         const bool has_penumbra = penumbraFace(role, t);
-        if (role.umbra_weight == 0 && !has_penumbra) return;
         const ScreenWedge* wedge = has_penumbra ? &frame.screen[size_t(role.wedge)] : nullptr;
         // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra.
         constexpr int kUmbra = 1, kPenumbra = 2;
@@ -209,21 +212,26 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
 
 void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
+  // Entries (front-facing wedge faces) and umbra quads; back-facing wedge faces add nothing.
+  const auto entry = [](const WedgeRole& role, const SetupTriangle& t) {
+    return role.wedge != kNoWedge && t.facing * role.face_sign > 0;
+  };
   forEachWedgeTriangle(
       frame, eye, li, stats,
+      [&](const WedgeRole& role, const SetupTriangle& t) {
+        return entry(role, t) || role.umbra_weight != 0;
+      },
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         if (!setupRectEdges(t, e)) return;
         ++tw.tally.tested;
-        const bool entry = role.wedge != kNoWedge && t.facing * role.face_sign > 0;
-        if (!entry) {
+        if (!entry(role, t)) {
           // Umbra quads that are not a front-facing wedge face: back-facing front planes, where
           // rays leave a wedge through its front plane (s_i = 1, counted on the rasterized face
           // so that it pairs exactly with the entries the neighbouring wedges rasterize), and
           // quads with no wedge face (zero radius, nearly parallel edges, crossing front rays):
           // wedges of zero thickness, entered and left at once. Where the quad is in front of
           // the point, -255 if it faces the eye, +255 if not (z-pass).
-          if (role.umbra_weight == 0) return;
           WedgeKernelWork k;
           k.umbra_value = umbraValue(role, t, full);
           k.rule = DepthRule::Closer;
