@@ -213,8 +213,8 @@ def to_markdown(s, have_peer):
             lines.append(f'| {t["scene"]} | {t["size"]} | {t["technique"]} | '
                          f'{t["ms"]["median"]:.1f} | {rays} | {vs} |')
     if s.get("soft_shadow_frames"):
-        lines += ["", "Soft-shadow frame (eye pass + technique + shading; wedges: full culling, 8x8 "
-                      "tiles, -tile32: 32x32; last column: the oracle's frame over the wedge frame, "
+        lines += ["", "Soft-shadow frame (eye pass + technique + shading; wedges: full culling, 16x16 "
+                      "tiles, -tile8: 8x8; last column: the oracle's frame over the wedge frame, "
                       "same size):", "",
                   "| scene | size | technique | fps | frame ms | passes ms | oracle-64 frame / this |",
                   "|---|---|---|---|---|---|---|"]
