@@ -100,6 +100,16 @@ dvec4 cross4(const dvec4& a, const dvec4& b, const dvec4& c) {
                -det3(dvec3(a.x, a.y, a.z), dvec3(b.x, b.y, b.z), dvec3(c.x, c.y, c.z)));
 }
 
+// A number in [0, 4) that increases with the angle of (x, y) from the x axis, as atan2(y, x)
+// does (the same order), for a tenth of the cost: sorting face vertices by it was 40 % of the
+// hull's time.
+double pseudoAngle(double x, double y) {
+  const double sum = std::fabs(x) + std::fabs(y);
+  if (!(sum > 0.0)) return 0.0;
+  const double p = y / sum;  // in [-1, 1]
+  return x >= 0.0 ? (p >= 0.0 ? p : 4.0 + p) : 2.0 - p;
+}
+
 WedgeHull wedgeHull(const Wedge& w) {
   const Plane* planes[4] = {&w.front, &w.back, &w.left, &w.right};
   dvec4 constraint[5];
@@ -200,7 +210,7 @@ WedgeHull wedgeHull(const Wedge& w) {
     std::vector<std::pair<double, uint32_t>> angle;
     for (uint32_t v : face) {
       const dvec3 d = hull.vertices[v].proxy - centre;
-      angle.emplace_back(std::atan2(glm::dot(d, t), glm::dot(d, u)), v);
+      angle.emplace_back(pseudoAngle(glm::dot(d, u), glm::dot(d, t)), v);
     }
     std::sort(angle.begin(), angle.end());
     for (size_t i = 0; i < face.size(); ++i) face[i] = angle[i].second;
@@ -243,6 +253,7 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
   WedgeFrame f;
   FrameBuilder out(f, view);
   const bool soft = light.radius > 0.0f;
+  const ScreenProjection projection = screenProjection(view);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     // Open meshes cast one-sided where they are consistently oriented (silhouette.h,
@@ -311,7 +322,7 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
           if (!hulls[i].valid) continue;
           std::vector<dvec4> corners;
           for (const HullVertex& v : hulls[i].vertices) corners.push_back(v.h);
-          screens[i] = toScreenWedge(w, corners, view, options.smooth_falloff);
+          screens[i] = toScreenWedge(w, corners, projection, options.smooth_falloff);
           screens[i].front_quad = i < ws.wedges.size() && frontIsQuad(hulls[i]);
         }
       });

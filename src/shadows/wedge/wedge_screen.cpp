@@ -4,15 +4,23 @@
 
 namespace penumbra {
 
-ScreenPlane toScreenPlane(const Plane& world, const View& view) {
+ScreenProjection screenProjection(const View& view) {
+  ScreenProjection p;
+  p.view_projection = dmat4(view.view_projection);
+  p.plane_to_clip = glm::transpose(glm::inverse(p.view_projection));
+  p.width = view.width;
+  p.height = view.height;
+  return p;
+}
+
+ScreenPlane toScreenPlane(const Plane& world, const ScreenProjection& projection) {
   // World plane value = (n, d) . X = (n, d) . M^-1 clip = q . clip with q = M^-T (n, d), and
   // clip = w (ndc_x, ndc_y, z, 1) for a finite point (core/view.h). Dividing by w and writing
   // ndc in pixels: ndc_x = 2 sx / W - 1, ndc_y = 1 - 2 sy / H.
-  const dmat4 m(view.view_projection);
-  const dvec4 q = glm::transpose(glm::inverse(m)) * dvec4(world.n, world.d);
+  const dvec4 q = projection.plane_to_clip * dvec4(world.n, world.d);
   ScreenPlane p;
-  p.a = float(2.0 * q.x / view.width);
-  p.b = float(-2.0 * q.y / view.height);
+  p.a = float(2.0 * q.x / projection.width);
+  p.b = float(-2.0 * q.y / projection.height);
   p.c = float(q.z);
   p.d = float(q.w - q.x + q.y);
   return p;
@@ -22,8 +30,8 @@ namespace {
 
 // Depth of a homogeneous world point (w = 1 point, w = 0 direction); returns false when the
 // point is behind the near plane (then the wedge may cover depths up to 1).
-bool depthOf(const View& view, const dvec4& p, float& depth) {
-  const dvec4 clip = dmat4(view.view_projection) * p;
+bool depthOf(const ScreenProjection& projection, const dvec4& p, float& depth) {
+  const dvec4 clip = projection.view_projection * p;
   if (!(clip.w - clip.z > 0.0)) return false;
   depth = float(clip.z / clip.w);
   return true;
@@ -32,12 +40,12 @@ bool depthOf(const View& view, const dvec4& p, float& depth) {
 }  // namespace
 
 ScreenWedge toScreenWedge(const Wedge& wedge, const std::vector<dvec4>& corners,
-                          const View& view, bool smooth) {
+                          const ScreenProjection& projection, bool smooth) {
   ScreenWedge s;
-  s.front = toScreenPlane(wedge.front, view);
-  s.back = toScreenPlane(wedge.back, view);
-  s.left = toScreenPlane(wedge.left, view);
-  s.right = toScreenPlane(wedge.right, view);
+  s.front = toScreenPlane(wedge.front, projection);
+  s.back = toScreenPlane(wedge.back, projection);
+  s.left = toScreenPlane(wedge.left, projection);
+  s.right = toScreenPlane(wedge.right, projection);
   const WedgeIntensityConstants k = wedgeIntensityConstants(wedge);
   s.k = {float(k.front_left), float(k.back_left), float(k.front_right), float(k.back_right),
          float(k.left), float(k.right)};
@@ -46,7 +54,7 @@ ScreenWedge toScreenWedge(const Wedge& wedge, const std::vector<dvec4>& corners,
   bool all_in_front = !corners.empty();
   for (const dvec4& p : corners) {
     float z;
-    if (!depthOf(view, p, z)) {
+    if (!depthOf(projection, p, z)) {
       all_in_front = false;
       break;
     }

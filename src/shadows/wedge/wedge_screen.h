@@ -21,7 +21,16 @@ struct ScreenPlane {
   float eval(float sx, float sy, float z) const { return ((a * sx + b * sy) + c * z) + d; }
 };
 
-ScreenPlane toScreenPlane(const Plane& world, const View& view);
+// The view's transforms in double, set up once per frame: world planes to screen planes (the
+// inverse transpose of view_projection) and world points to clip space.
+struct ScreenProjection {
+  dmat4 view_projection;
+  dmat4 plane_to_clip;  // transpose(inverse(view_projection))
+  int width = 0, height = 0;
+};
+ScreenProjection screenProjection(const View& view);
+
+ScreenPlane toScreenPlane(const Plane& world, const ScreenProjection& projection);
 
 // Float copies of WedgeIntensityConstants for the pixel kernels: s = b (r L Fl Dr + l R Fr Dl)
 // / ((r L + l R) Dl Dr), Dl = f Bl + b Fl, Dr = f Br + b Fr (wedge.h).
@@ -48,7 +57,7 @@ struct ScreenWedge {
 // depth range is theirs, since depth over a convex polyhedron in front of the eye is extreme at
 // its vertices (depth is a ratio of affine functions).
 ScreenWedge toScreenWedge(const Wedge& wedge, const std::vector<dvec4>& corners,
-                          const View& view, bool smooth);
+                          const ScreenProjection& projection, bool smooth);
 
 // Light intensity in [0, 1] from the four plane values of a point inside the wedge; the float
 // formula the kernels evaluate (same operations, same order as the SIMD twin).
