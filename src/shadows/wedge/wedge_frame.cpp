@@ -246,6 +246,74 @@ bool frontIsQuad(const WedgeHull& hull) {
   return points == 2 && directions == 2;
 }
 
+// A mesh's world-space wedges and their hulls and screen planes: everything of the frame that
+// does not depend on the other meshes, so meshes are prepared in parallel (a scene of many small
+// casters, like columns, has too few wedges per mesh to split one mesh's work).
+struct MeshWedges {
+  Silhouette silhouette;
+  WedgeSet ws;
+  std::vector<WedgeHull> hulls;      // per wedge of ws.wedges, then ws.gap_wedges
+  std::vector<ScreenWedge> screens;  // same order; valid where the hull is
+  bool zfail = false;
+
+  size_t wedgeCount() const { return ws.wedges.size() + ws.gap_wedges.size(); }
+  // The edge wedges, then the gap wedges at split vertices (wedge_gap.h). A gap wedge's front
+  // face is a triangle (the vertex and two directions), never a quad, so its connector umbra
+  // quad is counted as a plain umbra polygon and the front face is drawn as a penumbra face of
+  // its own, as for crossing front rays.
+  const Wedge& wedge(size_t i) const {
+    return i < ws.wedges.size() ? ws.wedges[i] : ws.gap_wedges[i - ws.wedges.size()];
+  }
+};
+
+MeshWedges prepareMesh(const TechniqueOptions& options, const Scene& scene, size_t m,
+                       const Light& light, const View& view,
+                       const ScreenProjection& projection) {
+  const Mesh& mesh = scene.meshes[m];
+  const bool soft = light.radius > 0.0f;
+  MeshWedges p;
+  // Open meshes cast one-sided where they are consistently oriented (silhouette.h,
+  // SolidWithHoles). Two-sided, a silhouette edge where both sheets of such a mesh meet has
+  // multiplicity 2: two coincident wedges and an umbra count of 2, so the LI is 255 (2 v - 1)
+  // and the inner half of the penumbra clamps to black (the overlap the 2002 paper names as a
+  // limitation, section 8; stanford-bunny's penumbra error against the oracle was 0.30). With
+  // a zero radius there is no penumbra, and the umbra must be the hard shadow volume bit for
+  // bit (wedge_frame.h), so the hard volume's casters are kept.
+  p.silhouette = findSilhouette(mesh, scene.adjacency[m], light.center,
+                                soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto);
+  WedgeOptions wedge_options;
+  wedge_options.acute_vertex_wedges = options.acute_wedges;
+  p.ws = buildWedges(mesh, p.silhouette, light, wedge_options);
+  // The soft volume lies within distance r of the hard volume from the centre, so inflating
+  // the caster's box by r keeps the near-plane test conservative (volume_mode.h). The 2002
+  // algorithm predates z-fail for wedges (its section 8) and always counts from the eye.
+  p.zfail = options.kind != TechniqueKind::Wedge2002 &&
+            (options.volume_mode == VolumeMode::ZFail ||
+             (options.volume_mode == VolumeMode::Auto &&
+              mayContainNearPlane(view, light.center, inflated(mesh.bounds(), light.radius))));
+  const size_t n_wedges = p.wedgeCount();
+  p.hulls.resize(n_wedges);
+  p.screens.resize(n_wedges);
+  if (!soft) return p;
+  // Hulls and screen-space planes are independent per wedge (most of the construction time:
+  // 19k wedges on fractal), so they are solved in parallel too; the frame numbers the wedges
+  // in order, so it does not depend on the thread count.
+  constexpr size_t kChunk = 64;
+  parallelFor((n_wedges + kChunk - 1) / kChunk, [&](size_t c) {
+    for (size_t i = c * kChunk; i < std::min(n_wedges, (c + 1) * kChunk); ++i) {
+      const Wedge& w = p.wedge(i);
+      if (w.flat) continue;
+      p.hulls[i] = wedgeHull(w);
+      if (!p.hulls[i].valid) continue;
+      std::vector<dvec4> corners;
+      for (const HullVertex& v : p.hulls[i].vertices) corners.push_back(v.h);
+      p.screens[i] = toScreenWedge(w, corners, projection, options.smooth_falloff);
+      p.screens[i].front_quad = i < p.ws.wedges.size() && frontIsQuad(p.hulls[i]);
+    }
+  });
+  return p;
+}
+
 }  // namespace
 
 WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
@@ -254,31 +322,19 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
   FrameBuilder out(f, view);
   const bool soft = light.radius > 0.0f;
   const ScreenProjection projection = screenProjection(view);
+  std::vector<MeshWedges> prepared(scene.meshes.size());
+  parallelFor(scene.meshes.size(), [&](size_t m) {
+    prepared[m] = prepareMesh(options, scene, m, light, view, projection);
+  });
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
-    // Open meshes cast one-sided where they are consistently oriented (silhouette.h,
-    // SolidWithHoles). Two-sided, a silhouette edge where both sheets of such a mesh meet has
-    // multiplicity 2: two coincident wedges and an umbra count of 2, so the LI is 255 (2 v - 1)
-    // and the inner half of the penumbra clamps to black (the overlap the 2002 paper names as a
-    // limitation, section 8; stanford-bunny's penumbra error against the oracle was 0.30). With
-    // a zero radius there is no penumbra, and the umbra must be the hard shadow volume bit for
-    // bit (wedge_frame.h), so the hard volume's casters are kept.
-    const Silhouette silhouette =
-        findSilhouette(mesh, scene.adjacency[m], light.center,
-                       soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto);
+    const MeshWedges& p = prepared[m];
+    const Silhouette& silhouette = p.silhouette;
+    const WedgeSet& ws = p.ws;
+    const std::vector<WedgeHull>& hulls = p.hulls;
+    const bool zfail = p.zfail;
     f.silhouette_edges += silhouette.edges.size();
-    WedgeOptions wedge_options;
-    wedge_options.acute_vertex_wedges = options.acute_wedges;
-    const WedgeSet ws = buildWedges(mesh, silhouette, light, wedge_options);
     f.junction_vertices += ws.junction_vertices;
-    // The soft volume lies within distance r of the hard volume from the centre, so inflating
-    // the caster's box by r keeps the near-plane test conservative (volume_mode.h). The 2002
-    // algorithm predates z-fail for wedges (its section 8) and always counts from the eye.
-    const bool zfail =
-        options.kind != TechniqueKind::Wedge2002 &&
-        (options.volume_mode == VolumeMode::ZFail ||
-         (options.volume_mode == VolumeMode::Auto &&
-          mayContainNearPlane(view, light.center, inflated(mesh.bounds(), light.radius))));
 
     const size_t n = mesh.positions.size();
     const uint32_t base = uint32_t(f.triangles.clip.size());
@@ -294,41 +350,15 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
     auto finite = [&](uint32_t v) { return base + v; };
     auto hard_infinity = [&](uint32_t v) { return uint32_t(base + n + v); };
 
-    // The edge wedges, then the gap wedges at split vertices (wedge_gap.h). A gap wedge's
-    // front face is a triangle (the vertex and two directions), never a quad, so its
-    // connector umbra quad is counted as a plain umbra polygon and the front face is drawn
-    // as a penumbra face of its own, as for crossing front rays.
-    const size_t n_wedges = ws.wedges.size() + ws.gap_wedges.size();
-    const auto wedgeAt = [&](size_t i) -> const Wedge& {
-      return i < ws.wedges.size() ? ws.wedges[i] : ws.gap_wedges[i - ws.wedges.size()];
-    };
+    const size_t n_wedges = p.wedgeCount();
     // Which umbra quads are also the front face of a wedge: the unit edge's quad, when the
     // front rays do not cross (the front face is then a, b and the two front directions).
-    const int32_t wedge_base = int32_t(f.wedges.size());
     std::vector<int32_t> front_face_of(ws.umbra.size(), kNoWedge);
     std::vector<int32_t> global_wedge(n_wedges, kNoWedge);
-    std::vector<WedgeHull> hulls(n_wedges);
     if (soft) {
-      // Hulls and screen-space planes are independent per wedge (most of the construction
-      // time: 19k wedges on fractal), so they are solved in parallel; the wedges are then
-      // numbered in order, so the frame does not depend on the thread count.
-      std::vector<ScreenWedge> screens(n_wedges);
-      constexpr size_t kChunk = 64;
-      parallelFor((n_wedges + kChunk - 1) / kChunk, [&](size_t c) {
-        for (size_t i = c * kChunk; i < std::min(n_wedges, (c + 1) * kChunk); ++i) {
-          const Wedge& w = wedgeAt(i);
-          if (w.flat) continue;
-          hulls[i] = wedgeHull(w);
-          if (!hulls[i].valid) continue;
-          std::vector<dvec4> corners;
-          for (const HullVertex& v : hulls[i].vertices) corners.push_back(v.h);
-          screens[i] = toScreenWedge(w, corners, projection, options.smooth_falloff);
-          screens[i].front_quad = i < ws.wedges.size() && frontIsQuad(hulls[i]);
-        }
-      });
-      int32_t next = wedge_base;
+      int32_t next = int32_t(f.wedges.size());
       for (size_t i = 0; i < n_wedges; ++i) {
-        const Wedge& w = wedgeAt(i);
+        const Wedge& w = p.wedge(i);
         if (w.flat) continue;
         if (!hulls[i].valid) {
           ++f.degenerate_wedges;
@@ -336,8 +366,8 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
         }
         global_wedge[i] = next++;
         f.wedges.push_back(w);
-        f.screen.push_back(screens[i]);
-        if (screens[i].front_quad) front_face_of[w.unit_edge] = global_wedge[i];
+        f.screen.push_back(p.screens[i]);
+        if (p.screens[i].front_quad) front_face_of[w.unit_edge] = global_wedge[i];
       }
     }
 
@@ -390,7 +420,7 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
     // front directions are the quad's: shared clip vertices keep the faces watertight.
     for (size_t i = 0; i < n_wedges; ++i) {
       if (global_wedge[i] == kNoWedge) continue;
-      const Wedge& w = wedgeAt(i);
+      const Wedge& w = p.wedge(i);
       const WedgeHull& hull = hulls[i];
       const bool quad = f.screen[size_t(global_wedge[i])].front_quad;
       const auto on = [](const HullVertex& v, std::initializer_list<int> faces) {
