@@ -46,9 +46,10 @@ struct TechniqueOptions {
   bool simd = true;           // false: run every hot loop's scalar twin
   // Penumbra wedges.
   CullMode cull = CullMode::Full;
-  // Culling tiles of 2^tile_level pixels, 1..8. 16 x 16 by default: within 2 % of the fastest
-  // frame for every scene and implementation of `penumbra bench` (the paper's optimum is 8 x 8
-  // to 32 x 32, section 7; docs/reproducing-2004.md).
+  // Culling tiles of 2^tile_level pixels, 1..8. 16 x 16 by default: the fastest frame of
+  // `penumbra bench` on fractal and year2002 and within 5 % of it on columns (32 x 32 there), for
+  // both implementations (the paper's optimum is 8 x 8 to 32 x 32, section 7;
+  // docs/reproducing-2004.md).
   int tile_level = 4;
   bool smooth_falloff = false;  // s' = 3 s^2 - 2 s^3 (2002 paper, section 4.2)
   bool acute_wedges = false;    // extra wedges around acute silhouette vertices (Figure 7)
