@@ -378,16 +378,20 @@ TEST(WedgeGeometryDegenerate, AcuteSteepCornerIsSplit) {
   EXPECT_TRUE(connector.inf_b == vec3(out.ray_front_left));
 }
 
+// A triangle with a 10 degree tip at (1, 0, 0), facing up.
+Mesh flatSliver() {
+  return facingUp("flat-sliver", {vec3(-1, 0, -0.0875f), vec3(1, 0, 0), vec3(-1, 0, 0.0875f)},
+                  {0, 1, 2});
+}
+
 // A flat sliver (a 10 degree corner) right under the light: at that tip the two front planes
 // meet 1 / sin(5 degrees) = 11 light radii out along the bisector, and umbra quads following
 // that line would make a spike the wedges do not cover (a long dark streak in the 2004
 // algorithm). Every ray must stay within twice the light's angular radius of the hard
 // direction; the tip is split instead, while the two wider corners keep their shared planes.
 TEST(WedgeGeometryDegenerate, RaysStayInsideTwiceTheLightCone) {
-  const Mesh mesh = facingUp(
-      "flat-sliver", {vec3(-1, 0, -0.0875f), vec3(1, 0, 0), vec3(-1, 0, 0.0875f)}, {0, 1, 2});
   const Light light = sphereLight(vec3(0.0f, 5.0f, 0.0f), 0.5f);
-  const Built built = build(mesh, light);
+  const Built built = build(flatSliver(), light);
   EXPECT_EQ(built.set.split_vertices, 1u);
   expectSane(built);
   const dvec3 c(light.center);
@@ -409,10 +413,8 @@ TEST(WedgeGeometryDegenerate, RaysStayInsideTwiceTheLightCone) {
 // of the notch are inside it and in neither edge wedge, lit from s = 1 at the connector down
 // to the hard direction. With r = 0 there is no split, so no gap wedge.
 TEST(WedgeGeometryDegenerate, SplitTipNotchIsCoveredByAGapWedge) {
-  const Mesh mesh = facingUp(
-      "flat-sliver", {vec3(-1, 0, -0.0875f), vec3(1, 0, 0), vec3(-1, 0, 0.0875f)}, {0, 1, 2});
   const Light light = sphereLight(vec3(0.0f, 5.0f, 0.0f), 0.5f);
-  const Built built = build(mesh, light);
+  const Built built = build(flatSliver(), light);
   ASSERT_EQ(built.set.split_vertices, 1u);
   ASSERT_EQ(built.set.gap_wedges.size(), 1u);
   expectGapWedgesSane(built, light);
