@@ -436,7 +436,7 @@ TEST(WedgeGeometryDegenerate, SplitTipNotchIsCoveredByAGapWedge) {
     EXPECT_LE(s, 1.0);
   }
   EXPECT_NEAR(wedgeIntensity(g, g.a + g.ray_front_left), 1.0, 1e-9);
-  EXPECT_TRUE(build(mesh, sphereLight(light.center, 0.0f)).set.gap_wedges.empty());
+  EXPECT_TRUE(build(flatSliver(), sphereLight(light.center, 0.0f)).set.gap_wedges.empty());
 }
 
 // Section 4.1, Figure 6: a light of radius 1 just 1.5 above a triangle of circumradius 0.5.
