@@ -165,13 +165,17 @@ TEST(WedgeTechnique, Original2002DiffersFromRestructuredByRoundingOnly) {
 // the LI buffer, the LI writes ("unaffected by occlusion culling", section 7) and the inside
 // count are those of no culling, while z-min/z-max culls at least as many tiles as z-max alone
 // (strictly more up to 32 x 32 tiles; a 256 x 256 tile holds half of this picture, and then
-// neither test culls anything), and z-max alone at least as many as none.
+// neither test culls anything), and z-max alone at least as many as none. The two-level stencil
+// (full culling) also leaves the LI buffer as it is, and never reads more depths; on columns,
+// whose column shadows pass in front of whole tiles of floor, it accepts tiles at every
+// culling tile up to 16 x 16 and reads fewer depths.
 TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
   for (const std::string& name : {std::string("spheres"), std::string("columns")}) {
     const Frame f = makeFrame(loadScene(name));
     for (TechniqueKind kind : kRestructured) {
       TechniqueOptions base = options(kind);
       base.cull = CullMode::None;
+      base.two_level_stencil = false;
       const WedgeLi reference = li(f, base);
       EXPECT_EQ(reference.stats.tiles_culled, 0u);
       for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
@@ -180,13 +184,32 @@ TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
           TechniqueOptions o = options(kind);
           o.cull = mode;
           o.tile_level = level;
+          o.two_level_stencil = false;
           const WedgeLi r = li(f, o);
           const std::string what = name + " " + techniqueName(kind) + " " + cullModeName(mode) +
                                    " 2^" + std::to_string(level);
           EXPECT_TRUE(r.li == reference.li) << what;
           EXPECT_EQ(r.stats.stencil_writes, reference.stats.stencil_writes) << what;
           EXPECT_EQ(r.stats.penumbra_inside, reference.stats.penumbra_inside) << what;
+          EXPECT_EQ(r.stats.tiles_accepted, 0u) << what;
           by_mode[int(mode)] = r.stats;
+
+          // If these fail, a coarse umbra value went to a tile the polygon does not cover or
+          // pass whole (the LI differs), or the two-level path never runs.
+          o.two_level_stencil = true;
+          const WedgeLi two = li(f, o);
+          EXPECT_TRUE(two.li == reference.li) << what << " two-level";
+          EXPECT_EQ(two.stats.penumbra_inside, reference.stats.penumbra_inside) << what;
+          EXPECT_EQ(two.stats.penumbra_tests, r.stats.penumbra_tests) << what;
+          if (mode != CullMode::Full) {
+            EXPECT_TRUE(two.stats.sameCounters(r.stats)) << what << " two-level";
+          } else {
+            EXPECT_LE(two.stats.z_reads, r.stats.z_reads) << what;
+            if (level <= 4 && name == "columns") {
+              EXPECT_GT(two.stats.tiles_accepted, 0u) << what;
+              EXPECT_LT(two.stats.z_reads, r.stats.z_reads) << what;
+            }
+          }
         }
         const Stats &none = by_mode[0], &zmax = by_mode[1], &full = by_mode[2];
         EXPECT_EQ(none.tiles_culled, 0u);

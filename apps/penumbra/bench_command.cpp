@@ -33,6 +33,7 @@ struct BenchArgs {
   std::string oracle_scene = SweepOptions{}.oracle_scene;
   int oracle_repeat = SweepOptions{}.oracle_repeat;
   bool smooth = false;
+  bool two_level = false;
   int threads = 0;
   bool scalar = false;
   bool no_plots = false;
@@ -56,6 +57,7 @@ int runBench(const BenchArgs& args) {
   options.oracle_scene = args.oracle_scene;
   options.oracle_repeat = args.oracle_repeat;
   options.smooth_falloff = args.smooth;
+  options.two_level_stencil = args.two_level;
   options.threads = args.threads;
   options.simd = !args.scalar;
   options.show_progress = !args.quiet;
@@ -145,6 +147,9 @@ Subcommand addBenchCommand(CLI::App& app) {
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
   cmd->add_flag("--smooth", args->smooth, "Smooth falloff s' = 3s^2 - 2s^3 in the wedges");
+  cmd->add_flag("--two-level", args->two_level,
+                "Umbra through the two-level stencil (Aila 2005), as `render` does; off: the "
+                "2004 paper's passes");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();

@@ -30,6 +30,7 @@ struct RenderArgs {
   std::string cull = cullModeName(TechniqueOptions{}.cull);
   int tile_size = 1 << TechniqueOptions{}.tile_level;
   bool smooth = false;
+  bool one_level_stencil = false;
   int width = 0;
   int height = 0;
   int threads = 0;
@@ -77,6 +78,7 @@ int runRender(const RenderArgs& args) {
   options.technique.cull = parseCullMode(args.cull);
   options.technique.tile_level = tileLevel(args.tile_size);
   options.technique.smooth_falloff = args.smooth;
+  options.technique.two_level_stencil = !args.one_level_stencil;
   options.technique.rays = args.rays;
   options.technique.hard = args.hard;
   options.technique.seed = args.seed;
@@ -149,6 +151,9 @@ Subcommand addRenderCommand(CLI::App& app) {
                   "Wedge culling tile size in pixels, a power of two in 2..256")
       ->capture_default_str();
   cmd->add_flag("--smooth", args->smooth, "Wedges: smooth falloff s' = 3s^2 - 2s^3");
+  cmd->add_flag("--one-level-stencil", args->one_level_stencil,
+                "Umbra pixel by pixel, as the papers' passes (default: tiles a volume polygon "
+                "covers and passes whole take one coarse stencil write)");
   cmd->add_option("--width", args->width, "Image width (default: the scene's)")
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height (default: the scene's)")

@@ -15,6 +15,8 @@ struct Stats {
   uint64_t stencil_writes = 0;     // stencil or LI-buffer writes
   uint64_t tiles_tested = 0;       // (primitive, tile) pairs given to the tile test
   uint64_t tiles_culled = 0;       // of those, the ones culled before any pixel
+  uint64_t tiles_accepted = 0;     // of the others, the ones a shadow-volume polygon covers and
+                                   // passes whole: one coarse stencil write, no pixel
   uint64_t silhouette_edges = 0;   // silhouette edges seen from the light centre
   uint64_t wedges = 0;             // penumbra wedges built
   uint64_t triangles = 0;          // triangles set up for rasterization (after clipping)
@@ -33,6 +35,7 @@ struct Stats {
     stencil_writes += o.stencil_writes;
     tiles_tested += o.tiles_tested;
     tiles_culled += o.tiles_culled;
+    tiles_accepted += o.tiles_accepted;
     silhouette_edges += o.silhouette_edges;
     wedges += o.wedges;
     triangles += o.triangles;
@@ -48,7 +51,8 @@ struct Stats {
   bool sameCounters(const Stats& o) const {
     return pixels_rasterized == o.pixels_rasterized && z_reads == o.z_reads &&
            stencil_writes == o.stencil_writes && tiles_tested == o.tiles_tested &&
-           tiles_culled == o.tiles_culled && silhouette_edges == o.silhouette_edges &&
+           tiles_culled == o.tiles_culled && tiles_accepted == o.tiles_accepted &&
+           silhouette_edges == o.silhouette_edges &&
            wedges == o.wedges && triangles == o.triangles &&
            penumbra_tests == o.penumbra_tests && penumbra_inside == o.penumbra_inside && rays == o.rays;
   }

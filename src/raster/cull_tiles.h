@@ -15,6 +15,37 @@ struct CullTally {
   uint64_t tested = 0, culled = 0;
 };
 
+// The cell of culling tile level `level` that `rect` lies in: the culling tile within the
+// rect's bin tile (a culling tile larger than the bin tile has the bin tile as its cell),
+// clipped to the image. Passes keep one coarse value per cell (tile_offsets.h).
+inline TileEdges cellOf(const TileEdges& rect, int level, int width, int height) {
+  TileEdges cell = rect;
+  const int size = 1 << std::min(level, kBinTileLevel);
+  cell.x0 = std::max(rect.tx0, (rect.x0 >> level) << level);
+  cell.y0 = std::max(rect.ty0, (rect.y0 >> level) << level);
+  cell.x1 = std::min({cell.x0 + size - 1, rect.tx0 + kBinTileSize - 1, width - 1});
+  cell.y1 = std::min({cell.y0 + size - 1, rect.ty0 + kBinTileSize - 1, height - 1});
+  return cell;
+}
+
+// True when `rect` (set up by setupRectEdges) is its whole cell and every pixel of it is inside
+// the triangle. The edges are linear, so each is smallest at a corner of the rect; the values
+// are the kernels' own int32 edge values (fixed_point.h), so "covered" here means exactly what
+// the kernels' inside test means. A folded edge (e0 = dx = dy = 0) holds everywhere.
+inline bool coversCell(const TileEdges& rect, int level, int width, int height) {
+  const TileEdges cell = cellOf(rect, level, width, height);
+  if (rect.x0 != cell.x0 || rect.y0 != cell.y0 || rect.x1 != cell.x1 || rect.y1 != cell.y1)
+    return false;
+  const int32_t rx0 = rect.x0 - rect.tx0, rx1 = rect.x1 - rect.tx0;
+  const int32_t ry0 = rect.y0 - rect.ty0, ry1 = rect.y1 - rect.ty0;
+  for (int i = 0; i < 3; ++i) {
+    const int32_t low = rect.e0[i] + std::min(rect.dx[i] * rx0, rect.dx[i] * rx1) +
+                        std::min(rect.dy[i] * ry0, rect.dy[i] * ry1);
+    if (low < 0) return false;
+  }
+  return true;
+}
+
 // Walks the culling tiles of level `level` that the rect of `e` touches (a culling tile at least
 // as large as the bin tile contains the rect whole). `e` comes from setupTileRect: the triangle's
 // edges are set up (setupRectEdges) only once a tile of the rect survives the pre-test below.
@@ -36,14 +67,25 @@ struct CullTally {
 // tile are first decided together on the whole rect with the bin tile's range: when that culls
 // everything, each of them would have been culled, and they are tallied so without a test each
 // (most pairs of a long shadow quad or wedge face and a tile are culled whole).
+//
+// `whole_bits` are bits of a code that hold only where the triangle covers its culling tile's
+// cell (coveredCell below) entirely: the walk clears them elsewhere before drawing, so that a
+// pass can say "this part passes the depth test at every pixel of the tile" from the depth
+// range alone and get the bit only where it may skip the pixels (two-level stencil,
+// tile_offsets.h).
 template <class Decide, class Draw>
 void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& depth, int level,
-                     Decide&& decide, Draw&& draw, CullTally& tally) {
+                     Decide&& decide, Draw&& draw, CullTally& tally, int whole_bits = 0) {
   const uint64_t tiles = uint64_t((e.x1 >> level) - (e.x0 >> level) + 1) *
                          uint64_t((e.y1 >> level) - (e.y0 >> level) + 1);
   auto cullAll = [&] {
     tally.tested += tiles;
     tally.culled += tiles;
+  };
+  auto keepWhole = [&](const TileEdges& sub, int code) {
+    if ((code & whole_bits) == 0 || coversCell(sub, level, depth.width(), depth.height()))
+      return code;
+    return code & ~whole_bits;
   };
   if (level >= kBinTileLevel) {
     const TileDepthRange& range = depth.tileRange(level);
@@ -52,7 +94,7 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
     if (code == 0) return cullAll();
     if (!setupRectEdges(t, e)) return;  // not handed out by the binner
     ++tally.tested;
-    draw(e, code);
+    draw(e, keepWhole(e, code));
     return;
   }
   const TileDepthRange& range = depth.tileRange(level);
@@ -90,6 +132,7 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
         code = decide(sub, range.zmin.at(cx, cy), range.zmax.at(cx, cy));
         ++tally.tested;
         tally.culled += code == 0;
+        if (code != 0) code = keepWhole(sub, code);
       }
       if (code == run_code && cx <= cx_last) {
         if (code != 0) next[next_count - 1].cx1 = cx;
@@ -124,5 +167,12 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
 // rect's corners, widened by the float error of the kernels' evaluation, so culling never
 // changes a pixel. Tiles of only background are culled: there is nothing to shadow.
 bool depthRuleCulled(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin, float zmax);
+
+// The other side of the same bounds: true when every pixel of the rect passes the depth rule
+// against a tile whose stored depths lie in [zmin, zmax] and none of them is background (z-pass:
+// the triangle's farthest point in front of the tile's nearest depth; z-fail: its nearest
+// behind or at the tile's farthest). Needs both z-min and z-max, so only full culling has it.
+bool depthRuleAccepted(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
+                       float zmax);
 
 }  // namespace penumbra

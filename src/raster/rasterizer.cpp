@@ -11,6 +11,7 @@
 #include "raster/fixed_point.h"
 #include "raster/tile_copy.h"
 #include "raster/tile_kernels.h"
+#include "raster/tile_offsets.h"
 
 namespace penumbra {
 namespace {
@@ -18,6 +19,7 @@ namespace {
 struct TileCounts {
   KernelCounts kernel;
   CullTally tally;
+  uint64_t accepted = 0;  // culling tiles whose polygon went to the coarse level
 };
 
 TileBox tileBox(const TileBins& bins, size_t tile, int width, int height) {
@@ -33,7 +35,29 @@ void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are
     if (writes_are_stencil) stats.stencil_writes += t.kernel.writes;
     stats.tiles_tested += t.tally.tested;
     stats.tiles_culled += t.tally.culled;
+    stats.tiles_accepted += t.accepted;
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The plane's extremes over the rect's pixel centres, widened by the float error of the kernels'
+// evaluation (tile_kernels.h: TileEdges), so a decision taken on them never changes a pixel.
+struct DepthBounds {
+  double lo, hi;
+};
+
+DepthBounds depthBounds(const SetupTriangle& t, const TileEdges& e) {
+  // At the first corner plus each step across the rect taken where it lowers (raises) the depth.
+  const double c00 = t.a * (e.x0 + 0.5) + t.b * (e.y0 + 0.5) + t.c;
+  const double across = t.a * (e.x1 - e.x0), down = t.b * (e.y1 - e.y0);
+  const double error = 8.0 * FLT_EPSILON *
+                       (std::fabs(e.dc) + kBinTileSize * (std::fabs(e.da) + std::fabs(e.db))) +
+                       1e-30;
+  return {c00 + std::min(across, 0.0) + std::min(down, 0.0) - error,
+          c00 + std::max(across, 0.0) + std::max(down, 0.0) + error};
 }
 
 }  // namespace
@@ -41,17 +65,17 @@ void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are
 bool depthRuleCulled(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
                      float zmax) {
   if (zmax <= 0.0f) return true;
-  // The plane's extremes over the rect's pixel centres: at the first corner plus each step
-  // across the rect taken where it lowers (raises) the depth.
-  const double c00 = t.a * (e.x0 + 0.5) + t.b * (e.y0 + 0.5) + t.c;
-  const double across = t.a * (e.x1 - e.x0), down = t.b * (e.y1 - e.y0);
-  const double error = 8.0 * FLT_EPSILON *
-                       (std::fabs(e.dc) + kBinTileSize * (std::fabs(e.da) + std::fabs(e.db))) +
-                       1e-30;
-  const double lo = c00 + std::min(across, 0.0) + std::min(down, 0.0) - error;
-  const double hi = c00 + std::max(across, 0.0) + std::max(down, 0.0) + error;
-  if (zfail) return lo > double(zmax);  // entirely in front of every pixel
-  return hi <= double(zmin);            // entirely behind or at every pixel
+  const DepthBounds b = depthBounds(t, e);
+  if (zfail) return b.lo > double(zmax);  // entirely in front of every pixel
+  return b.hi <= double(zmin);            // entirely behind or at every pixel
+}
+
+bool depthRuleAccepted(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
+                       float zmax) {
+  if (!(zmin > 0.0f)) return false;  // a background pixel, which the kernels never count
+  const DepthBounds b = depthBounds(t, e);
+  if (zfail) return b.hi <= double(zmin);  // behind or at every pixel
+  return b.lo > double(zmax);              // strictly in front of every pixel
 }
 
 void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
@@ -115,6 +139,11 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
     StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};
     target.x0 = box.x0;
     target.y0 = box.y0;
+    // Two-level stencil: a polygon that covers a whole culling tile and passes the depth rule
+    // at all of its pixels adds its contribution to the tile's coarse cell instead.
+    TileOffsets coarse(options.cull_level);
+    constexpr int kDraw = 1, kWhole = 2;
+    const bool two_level = options.tile_culling && options.two_level;
     for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
@@ -125,13 +154,24 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
       forEachCullRect(
           t, e, depth, options.cull_level,
           [&](const TileEdges& sub, float zmin, float zmax) {
-            return options.tile_culling && depthRuleCulled(t, sub, zfail, zmin, zmax) ? 0 : 1;
+            if (!options.tile_culling) return kDraw;
+            if (depthRuleCulled(t, sub, zfail, zmin, zmax)) return 0;
+            return two_level && depthRuleAccepted(t, sub, zfail, zmin, zmax) ? kDraw | kWhole
+                                                                              : kDraw;
           },
-          [&](const TileEdges& rect, int) {
+          [&](const TileEdges& rect, int code) {
+            if (code & kWhole) {
+              const uint64_t cells = coarse.add(rect, contribution);
+              c.accepted += cells;
+              c.kernel.writes += cells;
+              return;
+            }
             stencilKernel(rect, contribution, rule, target, c.kernel, options.simd);
           },
-          c.tally);
+          c.tally, kWhole);
     }
+    c.kernel.writes += coarse.applyTo(tile_stencil.data(), box,
+                                      [](int32_t& s, int32_t sum) { s += sum; });
     tile_stencil.storeTo(stencil, box);
   });
   sumInto(counts, stats, true);

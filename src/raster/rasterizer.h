@@ -27,6 +27,11 @@ struct StencilOptions {
   // Only work counters change with it, never the stencil.
   bool tile_culling = true;
   int cull_level = 5;  // culling tiles of 2^cull_level pixels (1..8); 5 = the bin tiles
+  // With tile_culling: a polygon that covers a whole culling tile and passes the depth rule at
+  // every pixel of it (z-min and z-max prove it) adds to one coarse value per tile instead of
+  // to each pixel (two-level stencil, Aila 2005, section 4.3; raster/tile_offsets.h). The
+  // stencil ends the same; z_reads and stencil_writes fall, tiles_accepted counts such tiles.
+  bool two_level = true;
 };
 
 // Adds every triangle's contribution to the stencil where its depth rule holds. The payload is

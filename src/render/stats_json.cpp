@@ -25,6 +25,7 @@ json statsToJson(const Stats& s) {
       {"stencil_writes", s.stencil_writes},
       {"tiles_tested", s.tiles_tested},
       {"tiles_culled", s.tiles_culled},
+      {"tiles_accepted", s.tiles_accepted},
       {"silhouette_edges", s.silhouette_edges},
       {"wedges", s.wedges},
       {"triangles", s.triangles},
@@ -101,9 +102,10 @@ VolumeMode parseVolumeMode(const std::string& name) {
 
 std::string describeTechnique(const TechniqueOptions& options) {
   const std::string name = techniqueName(options.kind);
+  const char* stencil = options.two_level_stencil ? "" : ", one-level stencil";
   switch (options.kind) {
     case TechniqueKind::ShadowVolume:
-      return fmt::format("{} ({})", name, volumeModeName(options.volume_mode));
+      return fmt::format("{} ({}{})", name, volumeModeName(options.volume_mode), stencil);
     case TechniqueKind::Reference:
       return options.hard ? fmt::format("{} (hard)", name)
                           : fmt::format("{} ({} rays)", name, options.rays);
@@ -111,9 +113,10 @@ std::string describeTechnique(const TechniqueOptions& options) {
       return fmt::format("{} ({})", name, volumeModeName(options.volume_mode));
     case TechniqueKind::WedgeThreePass:
     case TechniqueKind::WedgeSinglePass:
-      return fmt::format("{} ({}, cull {}, {}x{} tiles)", name, volumeModeName(options.volume_mode),
-                         cullModeName(options.cull), 1 << options.tile_level,
-                         1 << options.tile_level);
+      return fmt::format("{} ({}, cull {}, {}x{} tiles{})", name,
+                         volumeModeName(options.volume_mode), cullModeName(options.cull),
+                         1 << options.tile_level, 1 << options.tile_level,
+                         options.cull == CullMode::Full ? stencil : "");
   }
   return name;
 }
@@ -148,7 +151,8 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
         {"seed", t.seed},
         {"cull", cullModeName(t.cull)},
         {"tile_size", 1 << t.tile_level},
-        {"smooth_falloff", t.smooth_falloff}}},
+        {"smooth_falloff", t.smooth_falloff},
+        {"two_level_stencil", t.two_level_stencil}}},
       {"threads", effectiveThreads(options)},
       {"simd", t.simd},
       {"machine", {{"cpu", machine.cpu_model}, {"cores", machine.cores}}},
@@ -198,10 +202,10 @@ std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,
   line += fmt::format("; frame {:.1f} ms", result.total.totalMs());
   const Stats& c = result.total;
   line += fmt::format(
-      " | pixels {}, z reads {}, stencil writes {}, tiles {} ({} culled), silhouette edges {}, "
-      "wedges {}",
+      " | pixels {}, z reads {}, stencil writes {}, tiles {} ({} culled, {} accepted whole), "
+      "silhouette edges {}, wedges {}",
       c.pixels_rasterized, c.z_reads, c.stencil_writes, c.tiles_tested, c.tiles_culled,
-      c.silhouette_edges, c.wedges);
+      c.tiles_accepted, c.silhouette_edges, c.wedges);
   return line;
 }
 

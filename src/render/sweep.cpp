@@ -174,6 +174,7 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
   TechniqueOptions base;
   base.simd = o.simd;
   base.smooth_falloff = o.smooth_falloff;
+  base.two_level_stencil = o.two_level_stencil;
   base.light_count = 1;  // each light has its own LI buffer (renderShadows per light)
 
   // CullMode::None first for every implementation: the other modes are compared against it.
@@ -517,7 +518,7 @@ void writeSweepCsv(std::ostream& out, const SweepResult& result) {
       if (std::find(passes.begin(), passes.end(), name) == passes.end()) passes.push_back(name);
   out << "scene,width,height,lights,technique,cull,tile_level,tile_size,rays,runs,"
          "pixels_rasterized,z_reads,stencil_writes,memory_accesses,tiles_tested,tiles_culled,"
-         "tile_range_reads,memory_accesses_with_tiles,penumbra_tests,penumbra_inside,"
+         "tiles_accepted,tile_range_reads,memory_accesses_with_tiles,penumbra_tests,penumbra_inside,"
          "silhouette_edges,wedges,triangles,shadow_rays,counters_repeatable,technique_ms,"
          "technique_ms_min,technique_ms_max,technique_cpu_ms";
   for (const std::string& pass : passes) out << "," << passColumn(pass);
@@ -528,9 +529,9 @@ void writeSweepCsv(std::ostream& out, const SweepResult& result) {
     out << fmt::format("{},{},{},{},{},{},{},{},{},{},", csvField(r.scene), r.width, r.height,
                        r.lights, r.techniqueLabel(), cullModeName(r.cull), r.tile_level,
                        r.tile_level > 0 ? 1 << r.tile_level : 0, r.rays, r.runs);
-    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},", c.pixels_rasterized, c.z_reads,
-                       c.stencil_writes, r.memoryAccesses(), c.tiles_tested, c.tiles_culled,
-                       r.tileRangeReads(), r.memoryAccessesWithTiles(), c.penumbra_tests,
+    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},", c.pixels_rasterized,
+                       c.z_reads, c.stencil_writes, r.memoryAccesses(), c.tiles_tested,
+                       c.tiles_culled, c.tiles_accepted, r.tileRangeReads(), r.memoryAccessesWithTiles(), c.penumbra_tests,
                        c.penumbra_inside, c.silhouette_edges, c.wedges, c.triangles, c.rays);
     out << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f}", r.counters_repeatable ? 1 : 0,
                        r.technique_ms, r.technique_ms_min, r.technique_ms_max, r.technique_cpu_ms);

@@ -31,6 +31,10 @@ struct SweepOptions {
   std::string oracle_scene = "columns";
   int oracle_repeat = 1;  // the oracle takes ~1 s a run on 2 cores
   bool smooth_falloff = false;
+  // The 2004 paper's passes: every umbra pixel is depth-tested and written. true: the two-level
+  // stencil of TechniqueOptions::two_level_stencil (full culling only; stencil writes then
+  // change with culling, which the paper's evaluation says they do not).
+  bool two_level_stencil = false;
   bool simd = true;
   int threads = 0;             // 0: all cores
   bool show_progress = false;  // progress bar on a terminal (core/progress.h)

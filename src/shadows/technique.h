@@ -51,6 +51,11 @@ struct TechniqueOptions {
   // both implementations (the paper's optimum is 8 x 8 to 32 x 32, section 7;
   // docs/reproducing-2004.md).
   int tile_level = 4;
+  // Umbra polygons (hard shadow volumes; the wedges' front planes with full culling) that cover
+  // a whole culling tile and pass its depth test everywhere add to one coarse value per tile,
+  // not to each pixel: the two-level stencil of Aila's 2005 thesis (section 4.3). The buffers
+  // end the same bit for bit; false gives the 2004 paper's passes (its evaluation, `bench`).
+  bool two_level_stencil = true;
   bool smooth_falloff = false;  // s' = 3 s^2 - 2 s^3 (2002 paper, section 4.2)
   bool acute_wedges = false;    // extra wedges around acute silhouette vertices (Figure 7)
   int light_count = 1;          // LI units per light are 255 / light_count (2002 paper, section 7)

@@ -44,6 +44,7 @@ TechniqueResult renderShadowVolume(const TechniqueOptions& options, const Scene&
     PassTimer timer(stats, "volumes");
     StencilOptions stencil_options;
     stencil_options.simd = options.simd;
+    stencil_options.two_level = options.two_level_stencil;
     rasterizeStencil(polygons, eye.depth, stencil, stats, stencil_options);
   }
   {

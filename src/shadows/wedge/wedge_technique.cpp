@@ -25,6 +25,7 @@
 #include "raster/fixed_point.h"
 #include "raster/rasterizer.h"
 #include "raster/tile_copy.h"
+#include "raster/tile_offsets.h"
 #include "shadows/facing_away.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
@@ -38,6 +39,7 @@ namespace {
 struct TileWork {
   WedgeKernelCounts umbra, penumbra;
   CullTally tally;
+  uint64_t accepted = 0;  // culling tiles whose umbra part went to the coarse level
 };
 
 std::vector<WedgeCullPlanes> cullPlanes(const WedgeFrame& frame, int width, int height) {
@@ -63,6 +65,7 @@ void addTileWork(const std::vector<TileWork>& tiles, Stats& stats) {
     stats.penumbra_inside += t.penumbra.inside;
     stats.tiles_tested += t.tally.tested;
     stats.tiles_culled += t.tally.culled;
+    stats.tiles_accepted += t.accepted;
   }
 }
 
@@ -97,6 +100,7 @@ void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& option
   so.simd = options.simd;
   so.tile_culling = options.cull != CullMode::None;
   so.cull_level = options.tile_level;
+  so.two_level = options.two_level_stencil && options.cull == CullMode::Full;
   rasterizeStencil(umbra, eye.depth, stencil, stats, so);
   parallelFor(size_t(li.height()), [&](size_t y) {
     for (int x = 0; x < li.width(); ++x)
@@ -105,13 +109,15 @@ void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& option
 }
 
 // The scaffolding of the wedge passes: for every bin tile that holds a triangle the pass draws
-// (keep(role, triangle)), on the worker owning it, fn(triangle, rect, target, tile_work) for
-// those triangles in input order, where
-// target() gives the tile's depth and LI in L1 copies (raster/tile_copy.h), made on first use
-// and the LI stored back at the end of the tile. Counters are summed in tile order.
+// (keep(role, triangle)), on the worker owning it, fn(triangle, rect, target, coarse,
+// tile_work) for those triangles in input order, where target() gives the tile's depth and LI
+// in L1 copies (raster/tile_copy.h), made on first use and the LI stored back at the end of the
+// tile, and `coarse` holds umbra values per culling tile of 2^coarse_level pixels, added to
+// the LI (wrapping) before it is stored (two-level stencil, raster/tile_offsets.h). Counters
+// are summed in tile order.
 template <class Keep, class Fn>
 void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuffer& li,
-                          Stats& stats, Keep&& keep, Fn&& fn) {
+                          Stats& stats, int coarse_level, Keep&& keep, Fn&& fn) {
   const int width = li.width(), height = li.height();
   std::vector<TileWork> work(binTileCount(width, height));
   struct Copies {
@@ -136,7 +142,14 @@ void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuff
           return tile_target;
         };
         TileWork& tw = work[tile.index()];
-        tile.forEach([&](const SetupTriangle& t, TileEdges& e) { fn(t, e, target, tw); });
+        TileOffsets coarse(coarse_level);
+        tile.forEach([&](const SetupTriangle& t, TileEdges& e) { fn(t, e, target, coarse, tw); });
+        if (coarse.used()) {
+          target();
+          tw.umbra.writes += coarse.applyTo(copies->li.data(), box, [](int16_t& v, int32_t sum) {
+            v = liAdd(v, sum);
+          });
+        }
         if (copies) copies->li.storeTo(li, box);
       },
       stats);
@@ -147,8 +160,8 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   forEachWedgeTriangle(
-      frame, eye, li, stats, penumbraFace,
-      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
+      frame, eye, li, stats, options.tile_level, penumbraFace,
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         WedgeKernelWork k;
         k.wedge = &frame.screen[size_t(role.wedge)];
@@ -169,25 +182,31 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
 void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const EyeBuffers& eye,
                 int full, LiBuffer& li, Stats& stats) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
+  const bool two_level = options.two_level_stencil && options.cull == CullMode::Full;
   forEachWedgeTriangle(
-      frame, eye, li, stats,
+      frame, eye, li, stats, options.tile_level,
       [](const WedgeRole& role, const SetupTriangle& t) {
         return role.umbra_weight != 0 || penumbraFace(role, t);
       },
-      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets& coarse,
+          TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         const bool has_penumbra = penumbraFace(role, t);
         const ScreenWedge* wedge = has_penumbra ? &frame.screen[size_t(role.wedge)] : nullptr;
-        // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra.
-        constexpr int kUmbra = 1, kPenumbra = 2;
+        // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra, bit 2
+        // the umbra as one coarse value for the whole tile (two-level stencil).
+        constexpr int kUmbra = 1, kPenumbra = 2, kUmbraWhole = 4;
         forEachCullRect(
             t, e, eye.depth, options.tile_level,
             [&](const TileEdges& sub, float zmin, float zmax) {
               int parts = 0;
               if (role.umbra_weight != 0 &&
                   !(options.cull != CullMode::None &&
-                    depthRuleCulled(t, sub, role.zfail, zmin, zmax)))
+                    depthRuleCulled(t, sub, role.zfail, zmin, zmax))) {
                 parts |= kUmbra;
+                if (two_level && depthRuleAccepted(t, sub, role.zfail, zmin, zmax))
+                  parts |= kUmbraWhole;
+              }
               if (wedge != nullptr &&
                   !penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax))
                 parts |= kPenumbra;
@@ -196,17 +215,22 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
             [&](const TileEdges& rect, int parts) {
               WedgeKernelWork k;
               k.li_scale = float(full);
-              if (parts & kUmbra) {
+              if (parts & kUmbraWhole) {
+                const uint64_t cells = coarse.add(rect, umbraValue(role, t, full));
+                tw.accepted += cells;
+                tw.umbra.writes += cells;
+              } else if (parts & kUmbra) {
                 k.umbra_value = umbraValue(role, t, full);
                 k.rule = role.zfail ? DepthRule::NotCloser : DepthRule::Closer;
               }
               if (parts & kPenumbra) k.wedge = wedge;
+              if (k.umbra_value == 0 && k.wedge == nullptr) return;
               // One depth read per pixel for both parts: count it under the penumbra when
               // that part runs, else under the umbra.
               wedgeKernel(rect, k, target(), k.wedge != nullptr ? tw.penumbra : tw.umbra,
                           options.simd);
             },
-            tw.tally);
+            tw.tally, kUmbraWhole);
       });
 }
 
@@ -217,11 +241,11 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
     return role.wedge != kNoWedge && t.facing * role.face_sign > 0;
   };
   forEachWedgeTriangle(
-      frame, eye, li, stats,
+      frame, eye, li, stats, options.tile_level,
       [&](const WedgeRole& role, const SetupTriangle& t) {
         return entry(role, t) || role.umbra_weight != 0;
       },
-      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileWork& tw) {
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         if (!setupRectEdges(t, e)) return;
         ++tw.tally.tested;

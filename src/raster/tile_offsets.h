@@ -1,0 +1,71 @@
+#pragma once
+// The coarse level of a two-level stencil (Aila's 2005 thesis, section 4.3, publication P2):
+// one value per culling tile of a bin tile, for the contributions of shadow-volume polygons that
+// cover a whole culling tile and pass the depth test at every one of its pixels. Such a
+// polygon adds the same value to every pixel of the tile, so it adds it once, here, instead of
+// reading each pixel's depth and writing its stencil; the cells are added to the pixels once,
+// when the bin tile's copy is stored. Integer addition (wrapping, for the LI buffer) does not
+// depend on order, so the buffer ends bit for bit as the per-pixel passes leave it.
+//
+// Counted as memory accesses: one coarse write per (polygon, culling tile), and one pixel write
+// per pixel of a cell whose sum is not zero when the cells are applied. A shadow volume that
+// passes in front of a whole tile adds +1 and -1 there and costs two coarse writes and no pixel
+// write.
+#include <algorithm>
+#include <cstdint>
+
+#include "raster/cull_tiles.h"
+#include "raster/fixed_point.h"
+#include "raster/tile_copy.h"
+
+namespace penumbra {
+
+class TileOffsets {
+ public:
+  // Cells of culling tiles of 2^level pixels (one cell per bin tile from kBinTileLevel up).
+  explicit TileOffsets(int level)
+      : level_(std::min(level, kBinTileLevel)), per_row_(kBinTileSize >> level_) {
+    std::fill_n(cells_, per_row_ * per_row_, 0);
+  }
+
+  // Adds `value` to the cells of `rect`, a rectangle of whole cells of one bin tile (the rect a
+  // forEachCullRect draw receives for a code with a whole bit). Returns the cells written.
+  uint64_t add(const TileEdges& rect, int32_t value) {
+    const int cx0 = (rect.x0 - rect.tx0) >> level_, cx1 = (rect.x1 - rect.tx0) >> level_;
+    const int cy0 = (rect.y0 - rect.ty0) >> level_, cy1 = (rect.y1 - rect.ty0) >> level_;
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) cells_[cy * per_row_ + cx] += value;
+    used_ = true;
+    return uint64_t(cx1 - cx0 + 1) * uint64_t(cy1 - cy0 + 1);
+  }
+
+  bool used() const { return used_; }
+
+  // Adds each cell's sum to its pixels of the bin tile `box`, held in a TileCopy's layout
+  // (kBinTileSize pixels per row): add(pixel, sum) for every pixel of a cell whose sum is not
+  // zero. Returns the pixels written.
+  template <class T, class Add>
+  uint64_t applyTo(T* pixels, const TileBox& box, Add&& add) const {
+    if (!used_) return 0;
+    const int size = 1 << level_;
+    const int w = box.x1 - box.x0 + 1, h = box.y1 - box.y0 + 1;
+    uint64_t written = 0;
+    for (int cy = 0; cy < per_row_ && cy * size < h; ++cy)
+      for (int cx = 0; cx < per_row_ && cx * size < w; ++cx) {
+        const int32_t sum = cells_[cy * per_row_ + cx];
+        if (sum == 0) continue;
+        const int x1 = std::min(w, (cx + 1) * size), y1 = std::min(h, (cy + 1) * size);
+        for (int y = cy * size; y < y1; ++y)
+          for (int x = cx * size; x < x1; ++x) add(pixels[y * kBinTileSize + x], sum);
+        written += uint64_t(x1 - cx * size) * uint64_t(y1 - cy * size);
+      }
+    return written;
+  }
+
+ private:
+  int level_, per_row_;
+  bool used_ = false;
+  int32_t cells_[(kBinTileSize / 2) * (kBinTileSize / 2)];
+};
+
+}  // namespace penumbra
