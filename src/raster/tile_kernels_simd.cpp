@@ -78,7 +78,11 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
   const auto da = hn::Set(df, e.da);
   const auto zero = hn::Zero(df);
   const RowSpans spans(e);
-  for (int y = e.y0; y <= e.y1; ++y) {
+  int y_lo, y_hi;
+  if (!spans.rows(y_lo, y_hi)) return;
+  // Counted in registers: through `counts` every vector was a read-modify-write in memory.
+  uint64_t covered = 0, writes = 0;
+  for (int y = y_lo; y <= y_hi; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
@@ -92,18 +96,20 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
       const auto inside_i = hn::And(insideMask(di, e, row, rx, lane_step), in_row);
       if (hn::AllFalse(di, inside_i)) continue;
       const auto inside = hn::RebindMask(df, inside_i);
-      counts.covered += hn::CountTrue(df, inside);
+      covered += hn::CountTrue(df, inside);
       const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
       const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
       const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
       const auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
       if (hn::AllFalse(df, write)) continue;
-      counts.writes += hn::CountTrue(df, write);
+      writes += hn::CountTrue(df, write);
       const auto write_i = hn::RebindMask(di, write);
       const auto s = hn::MaskedLoad(write_i, di, stencil_row + (x - target.x0));
       hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + (x - target.x0));
     }
   }
+  counts.covered += covered;
+  counts.writes += writes;
 }
 
 }  // namespace HWY_NAMESPACE

@@ -45,7 +45,10 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
   HWY_ALIGN int32_t values[kMaxLanes];
   HWY_ALIGN int32_t writes[kMaxLanes];
   const RowSpans spans(e);
-  for (int y = e.y0; y <= e.y1; ++y) {
+  int y_lo, y_hi;
+  if (!spans.rows(y_lo, y_hi)) return;
+  WedgeKernelCounts local;  // in registers: through `counts` each update went to memory
+  for (int y = y_lo; y <= y_hi; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const auto sy = hn::Set(df, float(y) + 0.5f);
@@ -63,7 +66,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
       inside_i = hn::And(inside_i, hn::Gt(hn::Add(hn::Set(di, r2 + e.dx[2] * rx), lane_step[2]), minus_one));
       if (hn::AllFalse(di, inside_i)) continue;
       const auto covered = hn::RebindMask(df, inside_i);
-      counts.covered += hn::CountTrue(df, covered);
+      local.covered += hn::CountTrue(df, covered);
       const auto stored = hn::MaskedLoad(covered, df, depth_row + (x - target.x0));
       const auto surface = hn::And(covered, hn::Gt(stored, zero));
       if (hn::AllFalse(df, surface)) continue;
@@ -87,7 +90,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
         in = hn::And(in, hn::Ge(l, zero));
         in = hn::And(in, hn::Ge(r, zero));
         if (!hn::AllFalse(df, in)) {
-          counts.inside += hn::CountTrue(df, in);
+          local.inside += hn::CountTrue(df, in);
           // screenIntensity (wedge_screen.h), operation for operation.
           const ScreenIntensity& k = w->k;
           const auto dl = hn::Add(hn::Mul(f, hn::Set(df, k.back_left)), hn::Mul(b, hn::Set(df, k.front_left)));
@@ -120,11 +123,15 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
       for (int i = 0; i < n; ++i) {
         if (writes[i] == 0) continue;
         li_row[x - target.x0 + i] = liAdd(li_row[x - target.x0 + i], values[i]);
-        ++counts.writes;
+        ++local.writes;
       }
     }
   }
+  counts.covered += local.covered;
+  counts.writes += local.writes;
+  counts.inside += local.inside;
 }
+
 
 }  // namespace HWY_NAMESPACE
 }  // namespace penumbra
