@@ -184,6 +184,7 @@ TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
           TechniqueOptions o = options(kind);
           o.cull = mode;
           o.tile_level = level;
+          o.umbra_tile_level = 0;  // the three-pass umbra pass at every tile size too
           o.two_level_stencil = false;
           const WedgeLi r = li(f, o);
           const std::string what = name + " " + techniqueName(kind) + " " + cullModeName(mode) +

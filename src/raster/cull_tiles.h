@@ -160,19 +160,17 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
   for (int i = 0; i < pending_count; ++i) flush(pending[i], e.y1 >> level);
 }
 
-// True when no pixel of the rect can pass the triangle's depth rule against a tile whose stored
-// depths lie in [zmin, zmax] (reversed-Z): z-pass needs the triangle in front of some pixel (so
-// only the tile's farthest depth, the papers' z-max, matters), z-fail behind or at some pixel
-// (the tile's nearest, z-min). The triangle's depth over the rect is bounded by its plane at the
-// rect's corners, widened by the float error of the kernels' evaluation, so culling never
-// changes a pixel. Tiles of only background are culled: there is nothing to shadow.
-bool depthRuleCulled(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin, float zmax);
-
-// The other side of the same bounds: true when every pixel of the rect passes the depth rule
-// against a tile whose stored depths lie in [zmin, zmax] and none of them is background (z-pass:
-// the triangle's farthest point in front of the tile's nearest depth; z-fail: its nearest
-// behind or at the tile's farthest). Needs both z-min and z-max, so only full culling has it.
-bool depthRuleAccepted(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
-                       float zmax);
+// Which pixels of the rect can pass the triangle's depth rule against a tile whose stored
+// depths lie in [zmin, zmax] (reversed-Z): z-pass counts where the triangle is in front, so
+// None when it is behind or at the tile's farthest depth (the papers' z-max), All when it is
+// in front of the tile's nearest (the papers' z-min); z-fail counts behind or at, so None when
+// it is in front of the nearest, All when behind or at the farthest. The triangle's depth over
+// the rect is bounded by its plane at the rect's corners, widened by the float error of the
+// kernels' evaluation, so neither answer changes a pixel. Tiles of only background are None
+// (nothing to shadow); All also needs every pixel to have a surface (zmin > 0), and is only
+// looked for when `find_all` (it needs z-min, which only full culling has).
+enum class DepthRuleTiles : uint8_t { None, Some, All };
+DepthRuleTiles depthRuleTiles(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
+                              float zmax, bool find_all);
 
 }  // namespace penumbra

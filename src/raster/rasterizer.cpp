@@ -62,20 +62,20 @@ DepthBounds depthBounds(const SetupTriangle& t, const TileEdges& e) {
 
 }  // namespace
 
-bool depthRuleCulled(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
-                     float zmax) {
-  if (zmax <= 0.0f) return true;
+DepthRuleTiles depthRuleTiles(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
+                              float zmax, bool find_all) {
+  if (zmax <= 0.0f) return DepthRuleTiles::None;  // only background: nothing to shadow
   const DepthBounds b = depthBounds(t, e);
-  if (zfail) return b.lo > double(zmax);  // entirely in front of every pixel
-  return b.hi <= double(zmin);            // entirely behind or at every pixel
-}
-
-bool depthRuleAccepted(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
-                       float zmax) {
-  if (!(zmin > 0.0f)) return false;  // a background pixel, which the kernels never count
-  const DepthBounds b = depthBounds(t, e);
-  if (zfail) return b.hi <= double(zmin);  // behind or at every pixel
-  return b.lo > double(zmax);              // strictly in front of every pixel
+  if (zfail) {
+    if (b.lo > double(zmax)) return DepthRuleTiles::None;  // entirely in front of every pixel
+    // Behind or at every pixel, none of them background.
+    return find_all && zmin > 0.0f && b.hi <= double(zmin) ? DepthRuleTiles::All
+                                                           : DepthRuleTiles::Some;
+  }
+  if (b.hi <= double(zmin)) return DepthRuleTiles::None;  // entirely behind or at every pixel
+  // Strictly in front of every pixel, none of them background.
+  return find_all && zmin > 0.0f && b.lo > double(zmax) ? DepthRuleTiles::All
+                                                        : DepthRuleTiles::Some;
 }
 
 void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
@@ -155,9 +155,12 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
           t, e, depth, options.cull_level,
           [&](const TileEdges& sub, float zmin, float zmax) {
             if (!options.tile_culling) return kDraw;
-            if (depthRuleCulled(t, sub, zfail, zmin, zmax)) return 0;
-            return two_level && depthRuleAccepted(t, sub, zfail, zmin, zmax) ? kDraw | kWhole
-                                                                              : kDraw;
+            switch (depthRuleTiles(t, sub, zfail, zmin, zmax, two_level)) {
+              case DepthRuleTiles::None: return 0;
+              case DepthRuleTiles::Some: return kDraw;
+              case DepthRuleTiles::All: return kDraw | kWhole;
+            }
+            return kDraw;
           },
           [&](const TileEdges& rect, int code) {
             if (code & kWhole) {

@@ -175,6 +175,7 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
   base.simd = o.simd;
   base.smooth_falloff = o.smooth_falloff;
   base.two_level_stencil = o.two_level_stencil;
+  base.umbra_tile_level = 0;  // the umbra pass at the swept tile size too
   base.light_count = 1;  // each light has its own LI buffer (renderShadows per light)
 
   // CullMode::None first for every implementation: the other modes are compared against it.

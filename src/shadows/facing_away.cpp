@@ -2,8 +2,7 @@
 
 namespace penumbra {
 
-bool FacingAway::operator()(uint32_t primitive) {
-  if (primitive == cached_) return away_;
+bool FacingAway::decide(uint32_t primitive) {
   cached_ = primitive;
   const auto [m, t] = scene_->locateTriangle(primitive);
   const Mesh& mesh = scene_->meshes[m];

@@ -25,9 +25,14 @@ class FacingAway {
  public:
   FacingAway(const Scene& scene, const Light& light, const View& view)
       : scene_(&scene), eye_(view.eye), centre_(light.center), radius_(light.radius) {}
-  bool operator()(uint32_t primitive);
+  // Inline: called for every pixel, and nearly always answered from the remembered triangle.
+  bool operator()(uint32_t primitive) {
+    return primitive == cached_ ? away_ : decide(primitive);
+  }
 
  private:
+  bool decide(uint32_t primitive);
+
   const Scene* scene_;
   dvec3 eye_, centre_;
   double radius_;

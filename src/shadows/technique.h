@@ -51,6 +51,13 @@ struct TechniqueOptions {
   // both implementations (the paper's optimum is 8 x 8 to 32 x 32, section 7;
   // docs/reproducing-2004.md).
   int tile_level = 4;
+  // Culling tiles of the three-pass implementation's umbra pass, a stencil shadow volume pass
+  // (section 6.1; the paper drew it on the GPU, culled by the hardware's own tiles): 2^5 =
+  // 32 x 32, the bin tiles. Its polygons are few, long and mostly inside their tiles, and
+  // smaller tiles cost more in tile tests and kernel calls than they save in pixels (columns
+  // three-pass umbra pass, 16 x 16: 640x427 1.98 ms, 1920x1080 7.3 ms; 32 x 32: 1.73 / 6.1 ms,
+  // medians of 3). 0: the same tiles as the penumbra pass (tile_level), as `bench` sweeps them.
+  int umbra_tile_level = 5;
   // Umbra polygons (hard shadow volumes; the wedges' front planes with full culling) that cover
   // a whole culling tile and pass its depth test everywhere add to one coarse value per tile,
   // not to each pixel: the two-level stencil of Aila's 2005 thesis (section 4.3). The buffers

@@ -36,6 +36,9 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
   const hn::Vec<decltype(di)> lane_step[3] = {hn::Mul(hn::Set(di, e.dx[0]), iota_i),
                                               hn::Mul(hn::Set(di, e.dx[1]), iota_i),
                                               hn::Mul(hn::Set(di, e.dx[2]), iota_i)};
+  const hn::Vec<decltype(di)> vector_step[3] = {hn::Set(di, e.dx[0] * lanes),
+                                                hn::Set(di, e.dx[1] * lanes),
+                                                hn::Set(di, e.dx[2] * lanes)};
   const auto minus_one = hn::Set(di, -1);
   const auto zero = hn::Zero(df);
   const auto one = hn::Set(df, 1.0f);
@@ -58,12 +61,18 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
     if (!spans.span({r0, r1, r2}, x_lo, x_hi)) continue;
     const float* depth_row = target.depth + target.index(target.x0, y);
     int16_t* li_row = target.li + target.index(target.x0, y);
-    for (int x = x_lo; x <= x_hi; x += lanes) {
+    // The row's edge values, stepped by dx * lanes from one vector to the next.
+    const int rx_lo = x_lo - e.tx0;
+    auto edge0 = hn::Add(hn::Set(di, r0 + e.dx[0] * rx_lo), lane_step[0]);
+    auto edge1 = hn::Add(hn::Set(di, r1 + e.dx[1] * rx_lo), lane_step[1]);
+    auto edge2 = hn::Add(hn::Set(di, r2 + e.dx[2] * rx_lo), lane_step[2]);
+    for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step[0]),
+             edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2])) {
       const int rx = x - e.tx0;
       auto inside_i = hn::FirstN(di, size_t(x_hi - x + 1));
-      inside_i = hn::And(inside_i, hn::Gt(hn::Add(hn::Set(di, r0 + e.dx[0] * rx), lane_step[0]), minus_one));
-      inside_i = hn::And(inside_i, hn::Gt(hn::Add(hn::Set(di, r1 + e.dx[1] * rx), lane_step[1]), minus_one));
-      inside_i = hn::And(inside_i, hn::Gt(hn::Add(hn::Set(di, r2 + e.dx[2] * rx), lane_step[2]), minus_one));
+      inside_i = hn::And(inside_i, hn::Gt(edge0, minus_one));
+      inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
+      inside_i = hn::And(inside_i, hn::Gt(edge2, minus_one));
       if (hn::AllFalse(di, inside_i)) continue;
       const auto covered = hn::RebindMask(df, inside_i);
       local.covered += hn::CountTrue(df, covered);

@@ -99,7 +99,7 @@ void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& option
   StencilOptions so;
   so.simd = options.simd;
   so.tile_culling = options.cull != CullMode::None;
-  so.cull_level = options.tile_level;
+  so.cull_level = options.umbra_tile_level > 0 ? options.umbra_tile_level : options.tile_level;
   so.two_level = options.two_level_stencil && options.cull == CullMode::Full;
   rasterizeStencil(umbra, eye.depth, stencil, stats, so);
   parallelFor(size_t(li.height()), [&](size_t y) {
@@ -200,12 +200,13 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
             t, e, eye.depth, options.tile_level,
             [&](const TileEdges& sub, float zmin, float zmax) {
               int parts = 0;
-              if (role.umbra_weight != 0 &&
-                  !(options.cull != CullMode::None &&
-                    depthRuleCulled(t, sub, role.zfail, zmin, zmax))) {
-                parts |= kUmbra;
-                if (two_level && depthRuleAccepted(t, sub, role.zfail, zmin, zmax))
-                  parts |= kUmbraWhole;
+              if (role.umbra_weight != 0) {
+                const DepthRuleTiles umbra =
+                    options.cull == CullMode::None
+                        ? DepthRuleTiles::Some
+                        : depthRuleTiles(t, sub, role.zfail, zmin, zmax, two_level);
+                if (umbra != DepthRuleTiles::None) parts |= kUmbra;
+                if (umbra == DepthRuleTiles::All) parts |= kUmbraWhole;
               }
               if (wedge != nullptr &&
                   !penumbraCulled(options.cull, planes[size_t(role.wedge)], sub, zmin, zmax))
@@ -274,6 +275,10 @@ WedgeLi renderWedgeLi(const TechniqueOptions& options, const Scene& scene, const
   PENUMBRA_CHECK(options.tile_level >= kMinTileLevel && options.tile_level <= kMaxTileLevel,
                  "tile size 2^{} is outside 2^{}..2^{}", options.tile_level, kMinTileLevel,
                  kMaxTileLevel);
+  PENUMBRA_CHECK(options.umbra_tile_level == 0 || (options.umbra_tile_level >= kMinTileLevel &&
+                                                    options.umbra_tile_level <= kMaxTileLevel),
+                 "umbra tile size 2^{} is outside 2^{}..2^{}", options.umbra_tile_level,
+                 kMinTileLevel, kMaxTileLevel);
   PENUMBRA_CHECK(options.light_count >= 1 && options.light_count <= 255,
                  "light count {} is outside 1..255", options.light_count);
   WedgeLi result;
