@@ -57,9 +57,16 @@ TEST_F(SweepCli, RenderTakesCullingOptions) {
               0)
         << err_;
   }
-  // Culling never changes a pixel.
+  // Culling never changes a pixel, and neither does the two-level stencil (on by default).
+  ASSERT_EQ(run(fmt::format("render columns --technique wedge-1pass --width 64 --height 48 "
+                            "--cull full --tile-size 16 --one-level-stencil --quiet "
+                            "--visibility '{}'",
+                            path("one-level.exr"))),
+            0)
+      << err_;
   EXPECT_EQ(readExr(path("none.exr")), readExr(path("full.exr")));
   EXPECT_EQ(readExr(path("none.exr")), readExr(path("zmax.exr")));
+  EXPECT_EQ(readExr(path("none.exr")), readExr(path("one-level.exr")));
   EXPECT_EQ(run("render columns --technique wedge-3pass --width 64 --height 48 --smooth --quiet"),
             0)
       << err_;
