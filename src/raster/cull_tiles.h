@@ -69,7 +69,7 @@ inline bool coversCell(const TileEdges& rect, int level, int width, int height) 
 // (most pairs of a long shadow quad or wedge face and a tile are culled whole).
 //
 // `whole_bits` are bits of a code that hold only where the triangle covers its culling tile's
-// cell (coveredCell below) entirely: the walk clears them elsewhere before drawing, so that a
+// cell (coversCell above) entirely: the walk clears them elsewhere before drawing, so that a
 // pass can say "this part passes the depth test at every pixel of the tile" from the depth
 // range alone and get the bit only where it may skip the pixels (two-level stencil,
 // tile_offsets.h).

@@ -39,10 +39,6 @@ void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are
   }
 }
 
-}  // namespace
-
-namespace {
-
 // The plane's extremes over the rect's pixel centres, widened by the float error of the kernels'
 // evaluation (tile_kernels.h: TileEdges), so a decision taken on them never changes a pixel.
 struct DepthBounds {
