@@ -15,26 +15,20 @@ struct CullTally {
   uint64_t tested = 0, culled = 0;
 };
 
-// The cell of culling tile level `level` that `rect` lies in: the culling tile within the
-// rect's bin tile (a culling tile larger than the bin tile has the bin tile as its cell),
-// clipped to the image. Passes keep one coarse value per cell (tile_offsets.h).
-inline TileEdges cellOf(const TileEdges& rect, int level, int width, int height) {
-  TileEdges cell = rect;
-  const int size = 1 << std::min(level, kBinTileLevel);
-  cell.x0 = std::max(rect.tx0, (rect.x0 >> level) << level);
-  cell.y0 = std::max(rect.ty0, (rect.y0 >> level) << level);
-  cell.x1 = std::min({cell.x0 + size - 1, rect.tx0 + kBinTileSize - 1, width - 1});
-  cell.y1 = std::min({cell.y0 + size - 1, rect.ty0 + kBinTileSize - 1, height - 1});
-  return cell;
-}
-
 // True when `rect` (set up by setupRectEdges) is its whole cell and every pixel of it is inside
-// the triangle. The edges are linear, so each is smallest at a corner of the rect; the values
-// are the kernels' own int32 edge values (fixed_point.h), so "covered" here means exactly what
-// the kernels' inside test means. A folded edge (e0 = dx = dy = 0) holds everywhere.
+// the triangle. A cell is a culling tile of level `level` within the rect's bin tile (a culling
+// tile larger than the bin tile has the bin tile as its cell), clipped to the image: passes
+// keep one coarse value per cell (tile_offsets.h). The edges are linear, so each is smallest at
+// a corner of the rect; the values are the kernels' own int32 edge values (fixed_point.h), so
+// "covered" means exactly what the kernels' inside test means. A folded edge (e0 = dx = dy = 0)
+// holds everywhere.
 inline bool coversCell(const TileEdges& rect, int level, int width, int height) {
-  const TileEdges cell = cellOf(rect, level, width, height);
-  if (rect.x0 != cell.x0 || rect.y0 != cell.y0 || rect.x1 != cell.x1 || rect.y1 != cell.y1)
+  const int size = 1 << std::min(level, kBinTileLevel);
+  const int x0 = std::max(rect.tx0, (rect.x0 >> level) << level);
+  const int y0 = std::max(rect.ty0, (rect.y0 >> level) << level);
+  if (rect.x0 != x0 || rect.y0 != y0 ||
+      rect.x1 != std::min({x0 + size - 1, rect.tx0 + kBinTileSize - 1, width - 1}) ||
+      rect.y1 != std::min({y0 + size - 1, rect.ty0 + kBinTileSize - 1, height - 1}))
     return false;
   const int32_t rx0 = rect.x0 - rect.tx0, rx1 = rect.x1 - rect.tx0;
   const int32_t ry0 = rect.y0 - rect.ty0, ry1 = rect.y1 - rect.ty0;

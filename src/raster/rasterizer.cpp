@@ -159,18 +159,16 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
             return kDraw;
           },
           [&](const TileEdges& rect, int code) {
-            if (code & kWhole) {
-              const uint64_t cells = coarse.add(rect, contribution);
-              c.accepted += cells;
-              c.kernel.writes += cells;
-              return;
-            }
-            stencilKernel(rect, contribution, rule, target, c.kernel, options.simd);
+            if (code & kWhole)
+              coarse.add(rect, contribution);
+            else
+              stencilKernel(rect, contribution, rule, target, c.kernel, options.simd);
           },
           c.tally, kWhole);
     }
-    c.kernel.writes += coarse.applyTo(tile_stencil.data(), box,
-                                      [](int32_t& s, int32_t sum) { s += sum; });
+    coarse.applyTo(
+        tile_stencil.data(), box, [](int32_t& s, int32_t sum) { s += sum; }, c.kernel.writes,
+        c.accepted);
     tile_stencil.storeTo(stencil, box);
   });
   sumInto(counts, stats, true);

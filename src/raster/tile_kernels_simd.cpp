@@ -83,8 +83,9 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
   // Counted in registers: through `counts` every vector was a read-modify-write in memory.
   uint64_t covered = 0, writes = 0;
   // The edge values step by dx * lanes from one vector to the next along a row.
-  const auto vector_step0 = hn::Set(di, e.dx[0] * lanes), vector_step1 = hn::Set(di, e.dx[1] * lanes),
-             vector_step2 = hn::Set(di, e.dx[2] * lanes);
+  const hn::Vec<decltype(di)> vector_step[3] = {hn::Set(di, e.dx[0] * lanes),
+                                                hn::Set(di, e.dx[1] * lanes),
+                                                hn::Set(di, e.dx[2] * lanes)};
   const auto minus_one = hn::Set(di, -1);
   for (int y = y_lo; y <= y_hi; ++y) {
     const int ry = y - e.ty0;
@@ -98,10 +99,10 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
     auto edge0 = hn::Add(hn::Set(di, row.start[0] + e.dx[0] * rx_lo), lane_step[0]);
     auto edge1 = hn::Add(hn::Set(di, row.start[1] + e.dx[1] * rx_lo), lane_step[1]);
     auto edge2 = hn::Add(hn::Set(di, row.start[2] + e.dx[2] * rx_lo), lane_step[2]);
-    for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step0),
-             edge1 = hn::Add(edge1, vector_step1), edge2 = hn::Add(edge2, vector_step2)) {
+    for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step[0]),
+             edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2])) {
       const int rx = x - e.tx0;
-      // insideMask, with the row's edge vectors carried along instead of rebuilt per vector.
+      // Inside all three edges (>= 0) and within the span.
       auto inside_i = hn::And(hn::FirstN(di, size_t(x_hi - x + 1)), hn::Gt(edge0, minus_one));
       inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
       inside_i = hn::And(inside_i, hn::Gt(edge2, minus_one));

@@ -14,9 +14,9 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "raster/cull_tiles.h"
 #include "raster/fixed_point.h"
 #include "raster/tile_copy.h"
+#include "raster/tile_kernels.h"
 
 namespace penumbra {
 
@@ -29,27 +29,29 @@ class TileOffsets {
   }
 
   // Adds `value` to the cells of `rect`, a rectangle of whole cells of one bin tile (the rect a
-  // forEachCullRect draw receives for a code with a whole bit). Returns the cells written.
-  uint64_t add(const TileEdges& rect, int32_t value) {
+  // forEachCullRect draw receives for a code with a whole bit).
+  void add(const TileEdges& rect, int32_t value) {
     const int cx0 = (rect.x0 - rect.tx0) >> level_, cx1 = (rect.x1 - rect.tx0) >> level_;
     const int cy0 = (rect.y0 - rect.ty0) >> level_, cy1 = (rect.y1 - rect.ty0) >> level_;
     for (int cy = cy0; cy <= cy1; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx) cells_[cy * per_row_ + cx] += value;
-    used_ = true;
-    return uint64_t(cx1 - cx0 + 1) * uint64_t(cy1 - cy0 + 1);
+    cells_written_ += uint64_t(cx1 - cx0 + 1) * uint64_t(cy1 - cy0 + 1);
   }
 
-  bool used() const { return used_; }
+  bool used() const { return cells_written_ > 0; }
 
   // Adds each cell's sum to its pixels of the bin tile `box`, held in a TileCopy's layout
   // (kBinTileSize pixels per row): add(pixel, sum) for every pixel of a cell whose sum is not
-  // zero. Returns the pixels written.
+  // zero. Counts the (polygon, culling tile) pairs taken whole into `accepted` and every coarse
+  // and pixel write into `writes`.
   template <class T, class Add>
-  uint64_t applyTo(T* pixels, const TileBox& box, Add&& add) const {
-    if (!used_) return 0;
+  void applyTo(T* pixels, const TileBox& box, Add&& add, uint64_t& writes,
+               uint64_t& accepted) const {
+    if (!used()) return;
+    accepted += cells_written_;
+    writes += cells_written_;
     const int size = 1 << level_;
     const int w = box.x1 - box.x0 + 1, h = box.y1 - box.y0 + 1;
-    uint64_t written = 0;
     for (int cy = 0; cy < per_row_ && cy * size < h; ++cy)
       for (int cx = 0; cx < per_row_ && cx * size < w; ++cx) {
         const int32_t sum = cells_[cy * per_row_ + cx];
@@ -57,14 +59,13 @@ class TileOffsets {
         const int x1 = std::min(w, (cx + 1) * size), y1 = std::min(h, (cy + 1) * size);
         for (int y = cy * size; y < y1; ++y)
           for (int x = cx * size; x < x1; ++x) add(pixels[y * kBinTileSize + x], sum);
-        written += uint64_t(x1 - cx * size) * uint64_t(y1 - cy * size);
+        writes += uint64_t(x1 - cx * size) * uint64_t(y1 - cy * size);
       }
-    return written;
   }
 
  private:
   int level_, per_row_;
-  bool used_ = false;
+  uint64_t cells_written_ = 0;
   int32_t cells_[(kBinTileSize / 2) * (kBinTileSize / 2)];
 };
 

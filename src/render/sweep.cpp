@@ -519,7 +519,8 @@ void writeSweepCsv(std::ostream& out, const SweepResult& result) {
       if (std::find(passes.begin(), passes.end(), name) == passes.end()) passes.push_back(name);
   out << "scene,width,height,lights,technique,cull,tile_level,tile_size,rays,runs,"
          "pixels_rasterized,z_reads,stencil_writes,memory_accesses,tiles_tested,tiles_culled,"
-         "tiles_accepted,tile_range_reads,memory_accesses_with_tiles,penumbra_tests,penumbra_inside,"
+         "tiles_accepted,tile_range_reads,memory_accesses_with_tiles,penumbra_tests,"
+         "penumbra_inside,"
          "silhouette_edges,wedges,triangles,shadow_rays,counters_repeatable,technique_ms,"
          "technique_ms_min,technique_ms_max,technique_cpu_ms";
   for (const std::string& pass : passes) out << "," << passColumn(pass);
@@ -532,7 +533,8 @@ void writeSweepCsv(std::ostream& out, const SweepResult& result) {
                        r.tile_level > 0 ? 1 << r.tile_level : 0, r.rays, r.runs);
     out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},", c.pixels_rasterized,
                        c.z_reads, c.stencil_writes, r.memoryAccesses(), c.tiles_tested,
-                       c.tiles_culled, c.tiles_accepted, r.tileRangeReads(), r.memoryAccessesWithTiles(), c.penumbra_tests,
+                       c.tiles_culled, c.tiles_accepted, r.tileRangeReads(),
+                       r.memoryAccessesWithTiles(), c.penumbra_tests,
                        c.penumbra_inside, c.silhouette_edges, c.wedges, c.triangles, c.rays);
     out << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f}", r.counters_repeatable ? 1 : 0,
                        r.technique_ms, r.technique_ms_min, r.technique_ms_max, r.technique_cpu_ms);

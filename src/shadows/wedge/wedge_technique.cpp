@@ -146,9 +146,9 @@ void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuff
         tile.forEach([&](const SetupTriangle& t, TileEdges& e) { fn(t, e, target, coarse, tw); });
         if (coarse.used()) {
           target();
-          tw.umbra.writes += coarse.applyTo(copies->li.data(), box, [](int16_t& v, int32_t sum) {
-            v = liAdd(v, sum);
-          });
+          coarse.applyTo(
+              copies->li.data(), box, [](int16_t& v, int32_t sum) { v = liAdd(v, sum); },
+              tw.umbra.writes, tw.accepted);
         }
         if (copies) copies->li.storeTo(li, box);
       },
@@ -217,9 +217,7 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
               WedgeKernelWork k;
               k.li_scale = float(full);
               if (parts & kUmbraWhole) {
-                const uint64_t cells = coarse.add(rect, umbraValue(role, t, full));
-                tw.accepted += cells;
-                tw.umbra.writes += cells;
+                coarse.add(rect, umbraValue(role, t, full));
               } else if (parts & kUmbra) {
                 k.umbra_value = umbraValue(role, t, full);
                 k.rule = role.zfail ? DepthRule::NotCloser : DepthRule::Closer;
