@@ -1,5 +1,5 @@
-// The 2004 evaluation sweep (render/sweep.h) on a tiny image: one row per configuration, exact
-// integer counters that do not depend on the repetition, and culling that changes no pixel.
+// The 2004 evaluation sweep (evaluation/sweep.h) on a tiny image: one row per configuration,
+// exact integer counters that do not depend on the repetition, and culling that changes no pixel.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/sweep.h"
+#include "evaluation/sweep.h"
 
 namespace penumbra {
 namespace {

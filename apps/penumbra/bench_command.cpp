@@ -1,6 +1,6 @@
 // penumbra bench: the 2004 paper's evaluation (section 7) as a sweep over scenes, wedge
-// implementations, culling modes and tile sizes (render/sweep.h), written as CSV, a markdown
-// summary and plots (scripts/plot_sweep.py).
+// implementations, culling modes and tile sizes (evaluation/sweep.h), written as CSV, a
+// markdown summary and plots (scripts/plot_sweep.py).
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -13,7 +13,7 @@
 
 #include "commands.h"
 #include "core/error.h"
-#include "render/sweep.h"
+#include "evaluation/sweep.h"
 #include "shadows/technique.h"
 
 namespace penumbra::cli {

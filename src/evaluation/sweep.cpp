@@ -1,4 +1,4 @@
-#include "render/sweep.h"
+#include "evaluation/sweep.h"
 
 #include <fmt/format.h>
 
