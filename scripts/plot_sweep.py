@@ -11,9 +11,10 @@ Writes into --out:
                           none and z-max only vs none, on the culled pass and the technique (10b)
   culling_efficiency.png  penumbra pixel tests per pixel truly inside a wedge, per culling mode
 
-The speedups use the same definitions as evaluation/sweep.cpp (summarizeSweep): "no culling" is
-culling none at the largest swept tile level (no tile splitting timed), "full" and "z-max" are
-taken at their own fastest tile level. Run with Debian's /usr/bin/python3 (python3-matplotlib).
+The speedups use the same definitions as src/evaluation/sweep_report.cpp (summarizeSweep): "no
+culling" is culling none at the largest swept tile level (no tile splitting timed), "full" and
+"z-max" are taken at their own fastest tile level. Run with Debian's /usr/bin/python3
+(python3-matplotlib).
 """
 import argparse
 import csv

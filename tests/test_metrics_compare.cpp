@@ -88,5 +88,44 @@ TEST(MetricsCompare, RejectsMismatchedInputs) {
   EXPECT_THROW(compareImages(Image<float>(2, 2), Image<float>(2, 2), 0.1, &mask), Error);
 }
 
+// Exact comparison counts every pixel that differs at all, however little, and reports the
+// largest difference. If it failed, a culling mode that changed one pixel by one LI unit
+// (1/255) or by one ulp would pass the sweep's "culling changes no pixel" check, or its
+// pixels_differing / max_diff columns would be wrong.
+TEST(MetricsCompare, ExactCountsEveryDifferingPixel) {
+  Image<float> a(4, 1, 0.5f);
+  Image<float> b = a;
+  b[1] = std::nextafter(0.5f, 1.0f);  // one ulp: under any tolerance, still a difference
+  b[2] = 0.5f - 1.0f / 255.0f;
+  b[3] = 0.25f;
+  const ExactDifference d = compareExact(a, b);
+  EXPECT_EQ(d.pixels, 4u);
+  EXPECT_EQ(d.differing, 3u);
+  EXPECT_EQ(d.max_error, 0.25);
+  // Identical buffers: nothing differs, and the largest difference is 0.
+  const ExactDifference same = compareExact(a, a);
+  EXPECT_EQ(same.differing, 0u);
+  EXPECT_EQ(same.max_error, 0.0);
+  // The difference is taken in double: 1 - 1e-8 computed in float would round to 1.
+  const Image<float> one(1, 1, 1.0f);
+  const Image<float> tiny(1, 1, 1e-8f);
+  EXPECT_EQ(compareExact(one, tiny).max_error, 1.0 - double(1e-8f));
+}
+
+// Values are compared, not bit patterns: -0 equals +0. A NaN differs even from a NaN, and makes
+// the largest difference infinite, so a bug producing NaNs cannot hide as "0 differences".
+TEST(MetricsCompare, ExactSignedZeroAndNaN) {
+  Image<float> a(3, 1, 0.0f);
+  Image<float> b(3, 1, 0.0f);
+  b[0] = -0.0f;
+  EXPECT_EQ(compareExact(a, b).differing, 0u);
+  a[1] = NAN;
+  b[1] = NAN;
+  const ExactDifference d = compareExact(a, b);
+  EXPECT_EQ(d.differing, 1u);
+  EXPECT_TRUE(std::isinf(d.max_error));
+  EXPECT_THROW(compareExact(Image<float>(2, 2), Image<float>(2, 3)), Error);
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -1,5 +1,6 @@
-// The 2004 evaluation sweep (evaluation/sweep.h) on a tiny image: one row per configuration,
-// exact integer counters that do not depend on the repetition, and culling that changes no pixel.
+// The 2004 evaluation sweep (evaluation/sweep.h, evaluation/sweep_report.h) on a tiny image:
+// one row per configuration, exact integer counters that do not depend on the repetition, and
+// culling that changes no pixel.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "evaluation/sweep.h"
+#include "evaluation/sweep_report.h"
 
 namespace penumbra {
 namespace {

@@ -1,9 +1,14 @@
 // penumbra bench: the 2004 paper's evaluation (section 7) as a sweep over scenes, wedge
 // implementations, culling modes and tile sizes (evaluation/sweep.h), written as CSV, a
-// markdown summary and plots (scripts/plot_sweep.py).
+// markdown summary (evaluation/sweep_report.h) and plots: the library spawns no process, the
+// command runs scripts/plot_sweep.py with Debian's /usr/bin/python3 itself.
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
 
-#include <cstdlib>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,10 +19,83 @@
 #include "commands.h"
 #include "core/error.h"
 #include "evaluation/sweep.h"
+#include "evaluation/sweep_report.h"
 #include "shadows/technique.h"
+
+extern char** environ;
 
 namespace penumbra::cli {
 namespace {
+
+constexpr const char* kPython = "/usr/bin/python3";
+
+// The plotting script of the source tree this binary was built from.
+std::string plotScriptPath() {
+  return (std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scripts" / "plot_sweep.py").string();
+}
+
+// The plot command as a user would type it, for messages.
+std::string plotCommandLine(const std::string& csv, const std::string& out_dir) {
+  return fmt::format("{} '{}' --csv '{}' --out '{}'", kPython, plotScriptPath(), csv, out_dir);
+}
+
+// Runs `args` (args[0] an absolute path, no shell) and waits for it. Its stdout, and its stderr
+// when `quiet_stderr`, go to /dev/null when asked. Returns a description of the failure, empty
+// when it exited with status 0.
+std::string runProcess(const std::vector<std::string>& args, bool quiet_stdout,
+                       bool quiet_stderr) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (quiet_stdout)
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  if (quiet_stderr)
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return fmt::format("cannot start {}: {}", args[0], std::strerror(spawned));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return fmt::format("cannot wait for {}: {}", args[0], std::strerror(errno));
+  }
+  if (WIFEXITED(status))
+    return WEXITSTATUS(status) == 0 ? std::string()
+                                    : fmt::format("exit status {}", WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) return fmt::format("killed by signal {}", WTERMSIG(status));
+  return "stopped abnormally";
+}
+
+// Why the plots cannot be drawn here (empty: they can): no python3, no script, no matplotlib.
+std::string plottingUnavailable() {
+  if (!std::filesystem::exists(kPython))
+    return fmt::format("no {} (apt-get install python3-matplotlib)", kPython);
+  if (!std::filesystem::exists(plotScriptPath()))
+    return fmt::format("no plotting script at {}", plotScriptPath());
+  if (!runProcess({kPython, "-c", "import matplotlib"}, true, true).empty())
+    return fmt::format("{} cannot import matplotlib (apt-get install python3-matplotlib)",
+                       kPython);
+  return {};
+}
+
+// Draws the plots of `csv` into `out_dir` with scripts/plot_sweep.py; on failure says why and
+// how to plot later. Plotting is optional: it never changes the command's exit code.
+void plotSweep(const std::string& csv, const std::string& out_dir, bool quiet) {
+  const std::string command = plotCommandLine(csv, out_dir);
+  const std::string unavailable = plottingUnavailable();
+  if (!unavailable.empty()) {
+    if (!quiet)
+      std::cout << fmt::format("no plots: {}; plot later with:\n  {}\n", unavailable, command);
+    return;
+  }
+  std::cout.flush();  // the summary before the script's own lines
+  const std::string failure =
+      runProcess({kPython, plotScriptPath(), "--csv", csv, "--out", out_dir}, quiet, false);
+  if (!failure.empty())
+    std::cerr << "penumbra: plotting failed (" << failure << "); run: " << command << std::endl;
+}
 
 struct BenchArgs {
   std::vector<std::string> scenes = SweepOptions{}.scenes;
@@ -81,17 +159,7 @@ int runBench(const BenchArgs& args) {
   if (!args.quiet)
     std::cout << summary << fmt::format("\nwrote {}, {}\n", csv, (out_dir / "summary.md").string());
 
-  const std::string plot = plotCommand(csv, out_dir.string());
-  if (!args.no_plots) {
-    if (plottingAvailable()) {
-      const int status = std::system((plot + (args.quiet ? " >/dev/null" : "")).c_str());
-      if (status != 0) std::cerr << "penumbra: plotting failed; run: " << plot << std::endl;
-    } else if (!args.quiet) {
-      std::cout << "no /usr/bin/python3 with matplotlib (apt-get install python3-matplotlib); "
-                   "plot later with:\n  "
-                << plot << "\n";
-    }
-  }
+  if (!args.no_plots) plotSweep(csv, out_dir.string(), args.quiet);
 
   if (result.cullMismatches() > 0 || result.unrepeatableRows() > 0) {
     std::cerr << fmt::format(

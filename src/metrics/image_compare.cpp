@@ -1,5 +1,6 @@
 #include "metrics/image_compare.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -73,6 +74,22 @@ ImageDifference compareImages(const Image<vec3>& a, const Image<vec3>& b, double
     }
     return e;
   });
+}
+
+ExactDifference compareExact(const Image<float>& a, const Image<float>& b) {
+  PENUMBRA_CHECK(a.width() == b.width() && a.height() == b.height(),
+                 "cannot compare images of different sizes: {}x{} and {}x{}", a.width(),
+                 a.height(), b.width(), b.height());
+  ExactDifference d;
+  d.pixels = a.size();
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i] == b[i]) continue;
+    ++d.differing;
+    const double e = std::abs(double(a[i]) - double(b[i]));
+    d.max_error = std::isfinite(e) ? std::max(d.max_error, e)
+                                   : std::numeric_limits<double>::infinity();
+  }
+  return d;
 }
 
 }  // namespace penumbra

@@ -31,4 +31,18 @@ ImageDifference compareImages(const Image<float>& a, const Image<float>& b, doub
 ImageDifference compareImages(const Image<vec3>& a, const Image<vec3>& b, double tolerance,
                               const Image<uint8_t>* mask = nullptr);
 
+// Exact differences, for buffers that must agree to the last bit (culling on and off, repeated
+// runs): how many pixels differ at all and by how much at most. A pixel differs when its two
+// values compare unequal (+0 and -0 are equal; a NaN differs from everything, itself included).
+// The largest difference is |a - b| computed in double; infinite when a differing pixel has a
+// non-finite difference.
+struct ExactDifference {
+  size_t pixels = 0;     // pixels compared
+  size_t differing = 0;  // a[i] != b[i]
+  double max_error = 0;  // 0 when none differs
+};
+
+// Throws penumbra::Error when the sizes differ.
+ExactDifference compareExact(const Image<float>& a, const Image<float>& b);
+
 }  // namespace penumbra
