@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,7 @@
 #include "core/parallel.h"
 #include "render/eye_pass.h"
 #include "render/frame.h"
-#include "render/stats_json.h"
+#include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
 
 namespace penumbra {
@@ -60,8 +61,7 @@ void hardShadowFrame(benchmark::State& state, const std::string& scene_name, int
   FrameOptions options;
   options.width = width;
   options.height = height;
-  options.technique.kind = TechniqueKind::ShadowVolume;
-  options.technique.volume_mode = VolumeMode::Auto;
+  options.technique = TechniqueConfig("volume");
   PassTimes passes;
   Stats last;
   double seconds = 0.0;
@@ -92,11 +92,13 @@ void hardShadowFrame(benchmark::State& state, const std::string& scene_name, int
 }
 
 void technique(benchmark::State& state, const std::string& scene_name, int width, int height,
-               const TechniqueOptions& options, const std::string& description) {
+               const TechniqueConfig& config) {
   const Scene& scene = benchScene(scene_name);
   const View view = scene.camera.makeView(width, height);
   Stats eye_stats;
-  const EyeBuffers eye = renderEyePass(scene, view, eye_stats, options.simd);
+  const EyeBuffers eye = renderEyePass(scene, view, eye_stats);
+  // Per-scene state (the oracle's BVH) is prepared once, as a frame loop does.
+  const std::unique_ptr<PreparedTechnique> prepared = prepareTechnique(config, scene);
   PassTimes passes;
   Stats last;
   double seconds = 0.0;
@@ -104,7 +106,7 @@ void technique(benchmark::State& state, const std::string& scene_name, int width
     Stats frame;
     const auto start = std::chrono::steady_clock::now();
     for (const Light& light : scene.lights) {
-      TechniqueResult result = renderShadows(options, scene, light, view, eye);
+      TechniqueResult result = prepared->render(light, view, eye, RenderContext{});
       benchmark::DoNotOptimize(result.visibility.data());
       frame.add(result.stats);
     }
@@ -124,7 +126,7 @@ void technique(benchmark::State& state, const std::string& scene_name, int width
   state.counters["pixels_rasterized"] = double(last.pixels_rasterized);
   state.counters["threads"] = double(workerCount());
   state.SetLabel(fmt::format("{} {}x{} {} lights, {}: {:.1f} ms", scene_name, width, height,
-                             scene.lights.size(), description, 1e3 / per_second));
+                             scene.lights.size(), config.describe(), 1e3 / per_second));
 }
 
 benchmark::internal::Benchmark* timed(benchmark::internal::Benchmark* b, double min_time) {
@@ -149,31 +151,26 @@ bool registerFrameBenchmarks() {
 
   struct TechniqueCase {
     std::string id;
-    TechniqueOptions options;
+    TechniqueConfig config;
     double min_time;
   };
   std::vector<TechniqueCase> cases;
   {
-    TechniqueOptions volume;
-    volume.kind = TechniqueKind::ShadowVolume;
-    cases.push_back({"volume", volume, 0.3});
-    TechniqueOptions hard;
-    hard.kind = TechniqueKind::Reference;
-    hard.hard = true;
+    cases.push_back({"volume", TechniqueConfig("volume"), 0.3});
+    TechniqueConfig hard("reference");
+    hard.options<ReferenceOptions>().hard = true;
     cases.push_back({"reference-hard", hard, 0.3});
     // 64 rays takes over a second a frame on 2 cores: one iteration per repetition is enough,
     // the rounds of bench/run_benchmarks.sh give the spread.
-    TechniqueOptions soft;
-    soft.kind = TechniqueKind::Reference;
-    soft.rays = 64;
+    TechniqueConfig soft("reference");
+    soft.options<ReferenceOptions>().rays = 64;
     cases.push_back({"reference-64", soft, 0.5});
   }
   for (const TechniqueCase& c : cases) {
     const std::string name = fmt::format("Technique/columns/640x427/{}", c.id);
-    const std::string description = describeTechnique(c.options);
     timed(benchmark::RegisterBenchmark(name.c_str(),
-                                       [options = c.options, description](benchmark::State& s) {
-                                         technique(s, "columns", 640, 427, options, description);
+                                       [config = c.config](benchmark::State& s) {
+                                         technique(s, "columns", 640, 427, config);
                                        }),
           c.min_time);
   }

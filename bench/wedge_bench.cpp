@@ -1,6 +1,6 @@
 // Soft-shadow frames: penumbra wedges against the ray-traced oracle, in one binary and one run.
 //
-// SoftShadowFrame/columns/<size>/<technique>: renderFrame (eye pass, the technique for every
+// SoftShadowFrame/columns/<size>/<technique>: FrameRenderer (eye pass, the technique for every
 // light, shading) into a reused FrameResult, as a viewer renders frame after frame.
 //   wedge-3pass, wedge-1pass: the 2004 restructured algorithm, full z-min/z-max culling, the
 //     default 16x16 culling tiles, at 640x427 (the papers' size) and 1920x1080; -tile8: 8x8;
@@ -24,19 +24,22 @@
 #include "bench_scenes.h"
 #include "core/parallel.h"
 #include "render/frame.h"
-#include "render/stats_json.h"
+#include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
+#include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
 namespace {
 
 void softShadowFrame(benchmark::State& state, const std::string& scene_name, int width, int height,
-                     const TechniqueOptions& technique) {
+                     const TechniqueConfig& technique) {
   const Scene& scene = benchScene(scene_name);
   FrameOptions options;
   options.width = width;
   options.height = height;
   options.technique = technique;
+  // Prepared once, as a viewer renders frame after frame (the oracle's BVH is per scene).
+  const FrameRenderer renderer(scene, options);
   FrameResult frame;
   std::map<std::string, double> pass_totals;
   std::vector<std::string> pass_order;
@@ -45,7 +48,7 @@ void softShadowFrame(benchmark::State& state, const std::string& scene_name, int
     // Timed by hand: fps is frames per wall-clock second (the library's rate counters divide by
     // the main thread's CPU time).
     const auto start = std::chrono::steady_clock::now();
-    renderFrame(scene, options, frame);
+    renderer.render(frame);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     benchmark::DoNotOptimize(frame.color.data());
     for (const auto& [name, ms] : frame.total.time_ms) {
@@ -71,37 +74,37 @@ void softShadowFrame(benchmark::State& state, const std::string& scene_name, int
   if (c.rays > 0) state.counters["rays"] = double(c.rays);
   state.counters["threads"] = double(workerCount());
   state.SetLabel(fmt::format("{} {}x{}, {}: {:.1f} fps", scene_name, width, height,
-                             describeTechnique(technique), fps));
+                             technique.describe(), fps));
 }
 
 bool registerWedgeBenchmarks() {
   struct Case {
     std::string id;
     int width, height;
-    TechniqueOptions technique;
+    TechniqueConfig technique;
     double min_time;
   };
   std::vector<Case> cases;
-  for (TechniqueKind kind : {TechniqueKind::WedgeThreePass, TechniqueKind::WedgeSinglePass}) {
-    TechniqueOptions wedge;
-    wedge.kind = kind;
-    wedge.cull = CullMode::Full;
-    // The default culling tiles (16x16, technique.h), then 8x8, the papers' usual choice.
-    cases.push_back({techniqueName(kind), 640, 427, wedge, 0.3});
-    cases.push_back({techniqueName(kind), 1920, 1080, wedge, 0.3});
-    wedge.tile_level = 3;
-    cases.push_back({techniqueName(kind) + "-tile8", 640, 427, wedge, 0.3});
-    cases.push_back({techniqueName(kind) + "-tile8", 1920, 1080, wedge, 0.3});
+  for (const char* name : {"wedge-3pass", "wedge-1pass"}) {
+    const std::string id = name;
+    TechniqueConfig wedge(name);
+    WedgeOptions& o = wedge.options<WedgeOptions>();
+    o.cull = CullMode::Full;
+    // The default culling tiles (16x16, wedge_technique.h), then 8x8, the papers' usual choice.
+    cases.push_back({id, 640, 427, wedge, 0.3});
+    cases.push_back({id, 1920, 1080, wedge, 0.3});
+    o.tile_level = 3;
+    cases.push_back({id + "-tile8", 640, 427, wedge, 0.3});
+    cases.push_back({id + "-tile8", 1920, 1080, wedge, 0.3});
     // The papers' umbra pass, every pixel depth-tested and written: the A/B of the two-level
-    // stencil (TechniqueOptions::two_level_stencil) in the same run.
-    wedge.tile_level = TechniqueOptions{}.tile_level;
-    wedge.two_level_stencil = false;
-    cases.push_back({techniqueName(kind) + "-one-level", 640, 427, wedge, 0.3});
-    cases.push_back({techniqueName(kind) + "-one-level", 1920, 1080, wedge, 0.3});
+    // stencil (WedgeOptions::two_level_stencil) in the same run.
+    o.tile_level = WedgeOptions{}.tile_level;
+    o.two_level_stencil = false;
+    cases.push_back({id + "-one-level", 640, 427, wedge, 0.3});
+    cases.push_back({id + "-one-level", 1920, 1080, wedge, 0.3});
   }
-  TechniqueOptions oracle;
-  oracle.kind = TechniqueKind::Reference;
-  oracle.rays = 64;
+  TechniqueConfig oracle("reference");
+  oracle.options<ReferenceOptions>().rays = 64;
   // Over a second a frame on 2 cores: one iteration per repetition; rounds give the spread.
   cases.push_back({"reference-64", 640, 427, oracle, 0.5});
   for (const Case& c : cases) {

@@ -7,6 +7,7 @@
 #include "render/eye_pass.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
+#include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
 
 namespace penumbra::testing {
@@ -19,15 +20,16 @@ struct OracleComparison {
 };
 
 inline OracleComparison compareHardWithOracle(const Scene& scene, const View& view,
-                                              TechniqueOptions options, size_t light_index = 0) {
+                                              const TechniqueConfig& config,
+                                              size_t light_index = 0,
+                                              const RenderContext& context = {}) {
   OracleComparison c;
   Stats eye_stats;
-  c.eye = renderEyePass(scene, view, eye_stats, options.simd);
+  c.eye = renderEyePass(scene, view, eye_stats, context.simd);
   const Light& light = scene.lights.at(light_index);
-  c.technique = renderShadows(options, scene, light, view, c.eye);
-  TechniqueOptions reference;
-  reference.kind = TechniqueKind::Reference;
-  reference.hard = true;
+  c.technique = renderShadows(config, scene, light, view, c.eye, context);
+  TechniqueConfig reference("reference");
+  reference.options<ReferenceOptions>().hard = true;
   c.oracle = renderShadows(reference, scene, light, view, c.eye);
   c.agreement = compareHardShadows(c.technique.visibility, c.oracle.visibility, c.eye.depth.depth);
   return c;

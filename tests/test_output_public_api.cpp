@@ -12,7 +12,7 @@ TEST(OutputPublicApi, RendersAndMeasuresATinyFrame) {
   penumbra::FrameOptions options;
   options.width = 24;
   options.height = 16;
-  options.technique.kind = penumbra::parseTechniqueName("volume");
+  options.technique = penumbra::TechniqueConfig("volume");
   const penumbra::FrameResult frame = penumbra::renderFrame(scene, options);
   ASSERT_EQ(frame.lights.size(), scene.lights.size());
   EXPECT_EQ(frame.color.width(), 24);

@@ -424,8 +424,8 @@ TEST(PerfEquality, ShadingSimdAndScalarTwinsAreIdentical) {
   }
 }
 
-// renderFrame into a reused FrameResult gives the frame a fresh one does, also after the size
-// changed in between.
+// A FrameRenderer rendering into a reused FrameResult gives the frame a fresh one does, also
+// after the size changed in between.
 TEST(PerfEquality, RenderFrameReuseEqualsFresh) {
   const Scene scene = builtinScene("spheres");
   FrameResult reused;
@@ -433,7 +433,7 @@ TEST(PerfEquality, RenderFrameReuseEqualsFresh) {
     FrameOptions options;
     options.width = w;
     options.height = h;
-    renderFrame(scene, options, reused);
+    FrameRenderer(scene, options).render(reused);
     const FrameResult fresh = renderFrame(scene, options);
     EXPECT_TRUE(reused.color == fresh.color) << w << "x" << h;
     EXPECT_TRUE(reused.eye.depth.depth == fresh.eye.depth.depth);
@@ -441,7 +441,9 @@ TEST(PerfEquality, RenderFrameReuseEqualsFresh) {
     for (size_t i = 0; i < fresh.lights.size(); ++i)
       EXPECT_TRUE(reused.lights[i].visibility == fresh.lights[i].visibility);
     EXPECT_TRUE(reused.total.sameCounters(fresh.total));
-    EXPECT_EQ(reused.total.time_ms.size(), fresh.total.time_ms.size());
+    // The one-off frame also times preparing the technique for the scene, first.
+    ASSERT_EQ(reused.total.time_ms.size() + 1, fresh.total.time_ms.size());
+    EXPECT_EQ(fresh.total.time_ms.front().first, "prepare");
   }
 }
 

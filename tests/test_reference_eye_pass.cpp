@@ -6,7 +6,8 @@
 
 #include "render/eye_pass.h"
 #include "scene/generators.h"
-#include "shadows/reference/reference.h"
+#include "shadows/reference/reference_technique.h"
+#include "test_reference_fixture.h"
 
 namespace penumbra {
 namespace {
@@ -21,12 +22,9 @@ Scene finalized(std::vector<Mesh> meshes, const Light& light) {
   return scene;
 }
 
-TechniqueOptions hardOptions() {
-  TechniqueOptions options;
-  options.kind = TechniqueKind::Reference;
-  options.hard = true;
-  return options;
-}
+using reference_test::renderReference;
+
+TechniqueConfig hardOptions() { return reference_test::referenceConfig(256, 1, true); }
 
 // A lone convex polyhedron: a point on a face the light is in front of sees the light (the
 // body lies behind that face's plane); a point on a face turned away does not, however close

@@ -8,6 +8,7 @@
 #include "core/view.h"
 #include "raster/depth_buffer.h"
 #include "scene/scene.h"
+#include "shadows/reference/reference_technique.h"
 
 namespace penumbra::reference_test {
 
@@ -100,6 +101,22 @@ inline int coveredPixels(const EyeBuffers& eye) {
   int n = 0;
   for (size_t i = 0; i < eye.depth.depth.size(); ++i) n += eye.depth.depth[i] > 0.0f ? 1 : 0;
   return n;
+}
+
+// The oracle prepared on the spot for one light (shadows/technique.h).
+inline TechniqueResult renderReference(const TechniqueConfig& config, const Scene& scene,
+                                       const Light& light, const View& view,
+                                       const EyeBuffers& eye, const RenderContext& context = {}) {
+  return renderShadows(config, scene, light, view, eye, context);
+}
+
+inline TechniqueConfig referenceConfig(int rays, uint64_t seed = 1, bool hard = false) {
+  TechniqueConfig config("reference");
+  ReferenceOptions& o = config.options<ReferenceOptions>();
+  o.rays = rays;
+  o.seed = seed;
+  o.hard = hard;
+  return config;
 }
 
 }  // namespace penumbra::reference_test

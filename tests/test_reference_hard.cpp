@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "shadows/reference/reference.h"
+#include "shadows/reference/reference_technique.h"
 #include "test_reference_fixture.h"
 
 namespace penumbra {
@@ -17,15 +17,12 @@ using reference_test::coveredPixels;
 using reference_test::groundEyeBuffers;
 using reference_test::horizontalQuad;
 using reference_test::makeScene;
+using reference_test::referenceConfig;
+using reference_test::renderReference;
 
 constexpr float kGroundHalf = 4.0f;
 
-TechniqueOptions referenceOptions(int rays = 64) {
-  TechniqueOptions options;
-  options.kind = TechniqueKind::Reference;
-  options.rays = rays;
-  return options;
-}
+TechniqueConfig referenceOptions(int rays = 64) { return referenceConfig(rays); }
 
 View obliqueView() {
   return View::lookAt(96, 72, vec3(1.5f, 6.0f, 5.0f), vec3(0.0f), vec3(0, 1, 0), 45.0f, 0.1f);
@@ -122,12 +119,12 @@ TEST(ReferenceHard, PointLightHardFlagAndPacketsAgree) {
 
   Light sphere = point;
   sphere.radius = 0.7f;
-  TechniqueOptions hard = referenceOptions();
-  hard.hard = true;
+  TechniqueConfig hard = referenceOptions();
+  hard.options<ReferenceOptions>().hard = true;
   const TechniqueResult b = renderReference(hard, scene, sphere, view, eye);
-  TechniqueOptions single = referenceOptions();
+  RenderContext single;
   single.simd = false;
-  const TechniqueResult c = renderReference(single, scene, point, view, eye);
+  const TechniqueResult c = renderReference(referenceOptions(), scene, point, view, eye, single);
   EXPECT_TRUE(a.visibility == b.visibility);
   EXPECT_TRUE(a.visibility == c.visibility);
   EXPECT_TRUE(a.stats.sameCounters(b.stats));

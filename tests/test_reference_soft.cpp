@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/parallel.h"
-#include "shadows/reference/reference.h"
+#include "shadows/reference/reference_technique.h"
 #include "test_reference_fixture.h"
 
 namespace penumbra {
@@ -19,6 +19,8 @@ using reference_test::groundPoint;
 using reference_test::horizontalDisk;
 using reference_test::horizontalQuad;
 using reference_test::makeScene;
+using reference_test::referenceConfig;
+using reference_test::renderReference;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr float kGroundHalf = 4.0f;
@@ -49,13 +51,7 @@ DiskScene diskScene(int size) {
   return d;
 }
 
-TechniqueOptions softOptions(int rays, uint64_t seed = 1) {
-  TechniqueOptions options;
-  options.kind = TechniqueKind::Reference;
-  options.rays = rays;
-  options.seed = seed;
-  return options;
-}
+TechniqueConfig softOptions(int rays, uint64_t seed = 1) { return referenceConfig(rays, seed); }
 
 // Fraction of the light's cap seen from ground point (rho, 0, 0) that the disk leaves
 // unblocked: midpoint rule in (theta, phi) with the solid-angle weight sin(theta).
@@ -162,7 +158,7 @@ TEST(ReferenceSoft, DiskPenumbraMatchesQuadrature) {
 // on thread scheduling (shared random state, racy writes) or ignore the seed.
 TEST(ReferenceSoft, DeterministicAcrossRunsThreadsAndPackets) {
   const DiskScene d = diskScene(32);
-  const TechniqueOptions options = softOptions(64, 7);
+  const TechniqueConfig options = softOptions(64, 7);
   const TechniqueResult a = renderReference(options, d.scene, d.light, d.view, d.eye);
   const TechniqueResult b = renderReference(options, d.scene, d.light, d.view, d.eye);
   EXPECT_TRUE(a.visibility == b.visibility);
@@ -180,9 +176,9 @@ TEST(ReferenceSoft, DeterministicAcrossRunsThreadsAndPackets) {
   EXPECT_TRUE(two.visibility == a.visibility);
   EXPECT_TRUE(one.stats.sameCounters(two.stats));
 
-  TechniqueOptions single = options;
+  RenderContext single;
   single.simd = false;  // rtcOccluded1 instead of 16-ray packets
-  const TechniqueResult c = renderReference(single, d.scene, d.light, d.view, d.eye);
+  const TechniqueResult c = renderReference(options, d.scene, d.light, d.view, d.eye, single);
   EXPECT_TRUE(c.visibility == a.visibility);
 
   const TechniqueResult other =

@@ -5,6 +5,7 @@
 #include "render/eye_pass.h"
 #include "scene/builtin_scenes.h"
 #include "shadows/technique.h"
+#include "shadows/volume/volume_technique.h"
 
 namespace penumbra {
 namespace {
@@ -18,11 +19,10 @@ VolumeRun runVolumes(const Scene& scene, const View& view, int threads, bool sim
   ThreadLimit limit(threads);
   Stats eye_stats;
   const EyeBuffers eye = renderEyePass(scene, view, eye_stats, simd);
-  TechniqueOptions o;
-  o.kind = TechniqueKind::ShadowVolume;
-  o.volume_mode = mode;
-  o.simd = simd;
-  TechniqueResult r = renderShadows(o, scene, scene.lights[0], view, eye);
+  TechniqueConfig o("volume", VolumeOptions{mode});
+  RenderContext context;
+  context.simd = simd;
+  TechniqueResult r = renderShadows(o, scene, scene.lights[0], view, eye, context);
   r.stats.addCounters(eye_stats);
   return {std::move(r.visibility), r.stats};
 }

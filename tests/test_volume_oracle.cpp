@@ -10,6 +10,7 @@
 #include "scene/generators.h"
 #include "scene/scene_file.h"
 #include "shadow_test_util.h"
+#include "shadows/volume/volume_technique.h"
 
 namespace penumbra {
 namespace {
@@ -38,11 +39,8 @@ void expectMatchesOracle(const testing::OracleComparison& c, const std::string& 
               (unsigned long long)c.agreement.off_boundary);
 }
 
-TechniqueOptions volumeOptions(VolumeMode mode = VolumeMode::Auto) {
-  TechniqueOptions o;
-  o.kind = TechniqueKind::ShadowVolume;
-  o.volume_mode = mode;
-  return o;
+TechniqueConfig volumeOptions(VolumeMode mode = VolumeMode::Auto) {
+  return TechniqueConfig("volume", VolumeOptions{mode});
 }
 
 // A ground plane with a sphere hovering over it: the small scene the eye-placement tests move

@@ -21,7 +21,7 @@ struct Built {
   size_t unit_edges = 0;
 };
 
-Built build(Mesh mesh, const Light& light, const WedgeOptions& options = {}) {
+Built build(Mesh mesh, const Light& light, const WedgeBuildOptions& options = {}) {
   Built b;
   b.mesh = std::move(mesh);
   const EdgeAdjacency adjacency = buildEdges(b.mesh);
@@ -462,12 +462,8 @@ TEST(WedgeGeometry, StraightEdgeMatchesDiskLightCoverage) {
 
 TEST(WedgeGeometry, RejectsBadInput) {
   const Built ok = build(squareMesh(2.0f, 1.0f), sphereLight(vec3(0, 6, 0), 0.5f));
-  WedgeOptions acute;
-  acute.acute_vertex_wedges = true;
-  // Figure 7 is not implemented: the option must fail loudly, never be ignored.
-  EXPECT_THROW(buildWedges(ok.mesh, ok.silhouette, sphereLight(vec3(0, 6, 0), 0.5f), acute), Error);
   EXPECT_THROW(buildWedges(ok.mesh, ok.silhouette, sphereLight(vec3(0, 6, 0), -1.0f)), Error);
-  WedgeOptions parallel;
+  WedgeBuildOptions parallel;
   parallel.parallel_degrees = 90.0;
   EXPECT_THROW(buildWedges(ok.mesh, ok.silhouette, sphereLight(vec3(0, 6, 0), 0.5f), parallel),
                Error);

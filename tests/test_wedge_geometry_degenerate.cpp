@@ -20,7 +20,7 @@ struct Built {
   size_t unit_edges = 0;
 };
 
-Built build(Mesh mesh, const Light& light, const WedgeOptions& options = {}) {
+Built build(Mesh mesh, const Light& light, const WedgeBuildOptions& options = {}) {
   Built b;
   b.mesh = std::move(mesh);
   const EdgeAdjacency adjacency = buildEdges(b.mesh);
@@ -312,7 +312,7 @@ TEST(WedgeGeometryDegenerate, NearlyParallelEdgeIsBridged) {
   }
 
   // With the threshold at 0 the edge keeps an (ill-conditioned) wedge: still no NaN.
-  WedgeOptions keep;
+  WedgeBuildOptions keep;
   keep.parallel_degrees = 0.0;
   const Built kept = build(boxMesh(), light, keep);
   EXPECT_EQ(kept.set.parallel_edges_removed, 0u);
@@ -527,7 +527,7 @@ TEST(WedgeGeometryDegenerate, RandomSoupsStaySane) {
         sphereLight(vec3(2 * unit(rng), 2 + 1.5f * unit(rng), 2 * unit(rng)), radii[rng() % 5]);
     if (mode == 3)
       light.center = positions[rng() % positions.size()] + vec3(0, 1e-3f * unit(rng), 0);
-    WedgeOptions options;
+    WedgeBuildOptions options;
     options.parallel_degrees = it % 3 == 0 ? 0.0 : 2.0;
     Mesh mesh;
     mesh.name = "soup";

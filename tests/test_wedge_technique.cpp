@@ -15,6 +15,8 @@
 #include "scene/builtin_scenes.h"
 #include "scene/scene_file.h"
 #include "shadows/technique.h"
+#include "shadows/volume/volume_technique.h"
+#include "shadows/wedge/wedge_technique.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge_frame.h"
 #include "shadow_test_util.h"
@@ -22,10 +24,9 @@
 namespace penumbra {
 namespace {
 
-constexpr TechniqueKind kWedgeKinds[] = {TechniqueKind::Wedge2002, TechniqueKind::WedgeThreePass,
-                                         TechniqueKind::WedgeSinglePass};
-constexpr TechniqueKind kRestructured[] = {TechniqueKind::WedgeThreePass,
-                                           TechniqueKind::WedgeSinglePass};
+constexpr WedgeAlgorithm kWedgeKinds[] = {WedgeAlgorithm::Original2002, WedgeAlgorithm::ThreePass,
+                                           WedgeAlgorithm::SinglePass};
+constexpr WedgeAlgorithm kRestructured[] = {WedgeAlgorithm::ThreePass, WedgeAlgorithm::SinglePass};
 
 struct Frame {
   Scene scene;
@@ -42,15 +43,19 @@ Frame makeFrame(Scene scene, int width = 320, int height = 214, bool simd = true
   return f;
 }
 
-TechniqueOptions options(TechniqueKind kind, VolumeMode mode = VolumeMode::Auto) {
-  TechniqueOptions o;
-  o.kind = kind;
+WedgeOptions options(VolumeMode mode = VolumeMode::Auto) {
+  WedgeOptions o;
   o.volume_mode = mode;
   return o;
 }
 
-WedgeLi li(const Frame& f, const TechniqueOptions& o, size_t light = 0) {
-  return renderWedgeLi(o, f.scene, f.scene.lights.at(light), f.view, f.eye);
+TechniqueConfig config(WedgeAlgorithm kind, VolumeMode mode = VolumeMode::Auto) {
+  return TechniqueConfig(wedgeTechniqueName(kind), options(mode));
+}
+
+WedgeLi li(const Frame& f, WedgeAlgorithm kind, const WedgeOptions& o, size_t light = 0,
+           const RenderContext& context = {}) {
+  return renderWedgeLi(kind, o, f.scene, f.scene.lights.at(light), f.view, f.eye, context);
 }
 
 // Scenes every exact test runs on: the paper scenes, and the small real mesh when present.
@@ -80,18 +85,18 @@ TEST(WedgeTechnique, ZeroRadiusGivesTheHardShadowVolumeImage) {
     for (size_t l = 0; l < f.scene.lights.size(); ++l) {
       const Light& light = f.scene.lights[l];
       for (VolumeMode mode : {VolumeMode::Auto, VolumeMode::ZPass, VolumeMode::ZFail}) {
-        const TechniqueResult hard = renderShadows(options(TechniqueKind::ShadowVolume, mode),
+        const TechniqueResult hard = renderShadows(TechniqueConfig("volume", VolumeOptions{mode}),
                                                    f.scene, light, f.view, f.eye);
         size_t shadowed = 0;
         for (size_t i = 0; i < hard.visibility.size(); ++i) shadowed += hard.visibility[i] == 0.0f;
         EXPECT_GT(shadowed, 100u) << name << ": the test needs shadows";
-        for (TechniqueKind kind : kWedgeKinds) {
-          if (kind == TechniqueKind::Wedge2002 && mode != VolumeMode::ZPass) continue;
+        for (WedgeAlgorithm kind : kWedgeKinds) {
+          if (kind == WedgeAlgorithm::Original2002 && mode != VolumeMode::ZPass) continue;
           const TechniqueResult r =
-              renderShadows(options(kind, mode), f.scene, light, f.view, f.eye);
+              renderShadows(config(kind, mode), f.scene, light, f.view, f.eye);
           EXPECT_EQ(r.stats.wedges, 0u);
           EXPECT_TRUE(r.visibility == hard.visibility)
-              << shortName(name) << " light " << l << " " << techniqueName(kind) << " mode "
+              << shortName(name) << " light " << l << " " << wedgeTechniqueName(kind) << " mode "
               << int(mode);
         }
       }
@@ -111,8 +116,8 @@ TEST(WedgeTechnique, ThreePassAndSinglePassGiveTheSameLiBuffer) {
   for (const std::string& name : names) {
     const Frame f = makeFrame(loadScene(name));
     for (VolumeMode mode : {VolumeMode::Auto, VolumeMode::ZPass, VolumeMode::ZFail}) {
-      const WedgeLi three = li(f, options(TechniqueKind::WedgeThreePass, mode));
-      const WedgeLi single = li(f, options(TechniqueKind::WedgeSinglePass, mode));
+      const WedgeLi three = li(f, WedgeAlgorithm::ThreePass, options(mode));
+      const WedgeLi single = li(f, WedgeAlgorithm::SinglePass, options(mode));
       EXPECT_TRUE(three.li == single.li) << shortName(name) << " mode " << int(mode);
       EXPECT_GT(three.stats.penumbra_inside, 0u) << shortName(name);
       EXPECT_EQ(three.stats.penumbra_inside, single.stats.penumbra_inside) << shortName(name);
@@ -141,8 +146,8 @@ TEST(WedgeTechnique, Original2002DiffersFromRestructuredByRoundingOnly) {
   names.push_back("fractal");
   for (const std::string& name : names) {
     const Frame f = makeFrame(loadScene(name), 640, 427);
-    const WedgeLi original = li(f, options(TechniqueKind::Wedge2002));
-    const WedgeLi restructured = li(f, options(TechniqueKind::WedgeThreePass, VolumeMode::ZPass));
+    const WedgeLi original = li(f, WedgeAlgorithm::Original2002, options());
+    const WedgeLi restructured = li(f, WedgeAlgorithm::ThreePass, options(VolumeMode::ZPass));
     int max_units = 0;
     size_t differing = 0;
     for (size_t i = 0; i < original.li.size(); ++i) {
@@ -172,22 +177,22 @@ TEST(WedgeTechnique, Original2002DiffersFromRestructuredByRoundingOnly) {
 TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
   for (const std::string& name : {std::string("spheres"), std::string("columns")}) {
     const Frame f = makeFrame(loadScene(name));
-    for (TechniqueKind kind : kRestructured) {
-      TechniqueOptions base = options(kind);
+    for (WedgeAlgorithm kind : kRestructured) {
+      WedgeOptions base = options();
       base.cull = CullMode::None;
       base.two_level_stencil = false;
-      const WedgeLi reference = li(f, base);
+      const WedgeLi reference = li(f, kind, base);
       EXPECT_EQ(reference.stats.tiles_culled, 0u);
       for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
         Stats by_mode[3];
         for (CullMode mode : {CullMode::None, CullMode::ZMax, CullMode::Full}) {
-          TechniqueOptions o = options(kind);
+          WedgeOptions o = options();
           o.cull = mode;
           o.tile_level = level;
           o.umbra_tile_level = 0;  // the three-pass umbra pass at every tile size too
           o.two_level_stencil = false;
-          const WedgeLi r = li(f, o);
-          const std::string what = name + " " + techniqueName(kind) + " " + cullModeName(mode) +
+          const WedgeLi r = li(f, kind, o);
+          const std::string what = name + " " + wedgeTechniqueName(kind) + " " + cullModeName(mode) +
                                    " 2^" + std::to_string(level);
           EXPECT_TRUE(r.li == reference.li) << what;
           EXPECT_EQ(r.stats.stencil_writes, reference.stats.stencil_writes) << what;
@@ -198,7 +203,7 @@ TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
           // If these fail, a coarse umbra value went to a tile the polygon does not cover or
           // pass whole (the LI differs), or the two-level path never runs.
           o.two_level_stencil = true;
-          const WedgeLi two = li(f, o);
+          const WedgeLi two = li(f, kind, o);
           EXPECT_TRUE(two.li == reference.li) << what << " two-level";
           EXPECT_EQ(two.stats.penumbra_inside, reference.stats.penumbra_inside) << what;
           EXPECT_EQ(two.stats.penumbra_tests, r.stats.penumbra_tests) << what;
@@ -223,7 +228,7 @@ TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
         }
         EXPECT_LE(full.z_reads, zmax.z_reads);
         EXPECT_LE(zmax.z_reads, none.z_reads);
-        if (level == 3 && kind == TechniqueKind::WedgeThreePass) {
+        if (level == 3 && kind == WedgeAlgorithm::ThreePass) {
           std::printf("[ wedges   ] %-18s 8x8 tiles: z reads none %llu, zmax %llu, full %llu; "
                       "tiles culled zmax %llu, full %llu\n",
                       name.c_str(), (unsigned long long)none.z_reads,
@@ -240,13 +245,13 @@ TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
 TEST(WedgeTechnique, ThreadsAndSimdDoNotChangeLiOrCounters) {
   for (const std::string& name : {std::string("columns"), std::string("spheres")}) {
     const Scene scene = loadScene(name);
-    for (TechniqueKind kind : kWedgeKinds) {
+    for (WedgeAlgorithm kind : kWedgeKinds) {
       auto run = [&](int threads, bool simd) {
         ThreadLimit limit(threads);
         const Frame f = makeFrame(scene, 320, 214, simd);
-        TechniqueOptions o = options(kind);
-        o.simd = simd;
-        return li(f, o);
+        RenderContext context;
+        context.simd = simd;
+        return li(f, kind, options(), 0, context);
       };
       const WedgeLi base = run(1, false);
       EXPECT_GT(base.stats.stencil_writes, 0u);
@@ -255,7 +260,7 @@ TEST(WedgeTechnique, ThreadsAndSimdDoNotChangeLiOrCounters) {
         for (bool simd : {false, true}) {
           if (simd && !simdKernelsAvailable()) continue;
           const WedgeLi r = run(threads, simd);
-          const std::string what = name + " " + techniqueName(kind) + " threads " +
+          const std::string what = name + " " + wedgeTechniqueName(kind) + " threads " +
                                    std::to_string(threads) + (simd ? " simd" : " scalar");
           EXPECT_TRUE(r.li == base.li) << what;
           EXPECT_TRUE(r.stats.sameCounters(base.stats)) << what;
@@ -277,12 +282,14 @@ TEST(WedgeTechnique, RasterizedWedgesCoverExactlyThePointsInsideThem) {
     const Frame f = makeFrame(loadScene(name));
     const Light& light = f.scene.lights[0];
     for (VolumeMode mode : {VolumeMode::ZPass, VolumeMode::ZFail}) {
-      const TechniqueOptions o = options(TechniqueKind::WedgeThreePass, mode);
-      const WedgeLi rasterized = li(f, o);
-      const WedgeFrame frame = buildWedgeFrame(o, f.scene, light, f.view);
+      const WedgeLi rasterized = li(f, WedgeAlgorithm::ThreePass, options(mode));
+      const WedgeFrame frame = buildWedgeFrame(WedgeFrameOptions{mode, false}, f.scene, light,
+                                               f.view, f.eye);
       ASSERT_FALSE(frame.screen.empty());
-      ClipTriangles umbra;
-      umbra.clip = frame.triangles.clip;
+      ClipTriangles umbra = frame.triangles;
+      umbra.indices.clear();
+      umbra.payload.clear();
+      umbra.flags.clear();
       for (size_t i = 0; i < frame.roles.size(); ++i) {
         if (frame.roles[i].umbra_weight == 0) continue;
         umbra.add(frame.triangles.indices[i * 3], frame.triangles.indices[i * 3 + 1],

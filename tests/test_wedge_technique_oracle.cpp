@@ -1,4 +1,4 @@
-// Penumbra wedge techniques against the ray-traced oracle (TechniqueKind::Reference, fixed
+// Penumbra wedge techniques against the ray-traced oracle (`reference`, fixed
 // seed): mean absolute visibility error over the covered pixels and over the oracle's penumbra
 // (0 < v < 1), the eye inside a shadow or inside a wedge (z-fail, 2004 paper, section 5), and
 // every shared model scene without light leaks.
@@ -17,7 +17,9 @@
 #include "scene/normals.h"
 #include "scene/scene_file.h"
 #include "shadows/silhouette.h"
+#include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
+#include "shadows/wedge/wedge_technique.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge.h"
 #include "shadows/wedge/wedge_frame.h"
@@ -27,8 +29,8 @@
 namespace penumbra {
 namespace {
 
-constexpr TechniqueKind kWedgeKinds[] = {TechniqueKind::Wedge2002, TechniqueKind::WedgeThreePass,
-                                         TechniqueKind::WedgeSinglePass};
+constexpr WedgeAlgorithm kWedgeKinds[] = {WedgeAlgorithm::Original2002, WedgeAlgorithm::ThreePass,
+                                           WedgeAlgorithm::SinglePass};
 
 // The acceptance bounds (the issue): over covered pixels, and over the oracle's penumbra.
 constexpr double kMaxMaeCovered = 0.03;
@@ -47,10 +49,9 @@ Frame makeFrame(Scene scene, int width, int height, int rays) {
   f.view = f.scene.camera.makeView(width, height);
   Stats stats;
   f.eye = renderEyePass(f.scene, f.view, stats);
-  TechniqueOptions o;
-  o.kind = TechniqueKind::Reference;
-  o.rays = rays;
-  o.seed = 1;
+  TechniqueConfig o("reference");
+  o.options<ReferenceOptions>().rays = rays;
+  o.options<ReferenceOptions>().seed = 1;
   f.oracle = renderShadows(o, f.scene, f.scene.lights.at(0), f.view, f.eye);
   return f;
 }
@@ -114,11 +115,15 @@ OracleError measure(const Frame& f, const Image<float>& v) {
   return e;
 }
 
-TechniqueResult render(const Frame& f, TechniqueKind kind, VolumeMode mode = VolumeMode::Auto) {
-  TechniqueOptions o;
-  o.kind = kind;
+TechniqueResult render(const Frame& f, WedgeAlgorithm kind, VolumeMode mode = VolumeMode::Auto) {
+  WedgeOptions o;
   o.volume_mode = mode;
-  return renderShadows(o, f.scene, f.scene.lights.at(0), f.view, f.eye);
+  return renderShadows(TechniqueConfig(wedgeTechniqueName(kind), o), f.scene,
+                       f.scene.lights.at(0), f.view, f.eye);
+}
+
+TechniqueResult renderHard(const Frame& f) {
+  return renderShadows(TechniqueConfig("volume"), f.scene, f.scene.lights.at(0), f.view, f.eye);
 }
 
 void report(const std::string& scene, const std::string& what, const OracleError& e) {
@@ -144,14 +149,14 @@ TEST(WedgeOracle, PaperScenesAndBunnyWithinBounds) {
   for (const std::string& name : names) {
     const Frame f = makeFrame(loadScene(name), 320, 214, 1024);
     const std::string scene = f.scene.name.empty() ? name : f.scene.name;
-    const OracleError hard = measure(f, render(f, TechniqueKind::ShadowVolume).visibility);
+    const OracleError hard = measure(f, renderHard(f).visibility);
     report(scene, "volume (hard)", hard);
-    for (TechniqueKind kind : kWedgeKinds) {
+    for (WedgeAlgorithm kind : kWedgeKinds) {
       const OracleError e = measure(f, render(f, kind).visibility);
-      report(scene, techniqueName(kind), e);
-      EXPECT_LE(e.covered, kMaxMaeCovered) << scene << " " << techniqueName(kind);
-      EXPECT_LE(e.penumbra, kMaxMaePenumbra) << scene << " " << techniqueName(kind);
-      EXPECT_LT(e.penumbra, 0.5 * hard.penumbra) << scene << " " << techniqueName(kind);
+      report(scene, wedgeTechniqueName(kind), e);
+      EXPECT_LE(e.covered, kMaxMaeCovered) << scene << " " << wedgeTechniqueName(kind);
+      EXPECT_LE(e.penumbra, kMaxMaePenumbra) << scene << " " << wedgeTechniqueName(kind);
+      EXPECT_LT(e.penumbra, 0.5 * hard.penumbra) << scene << " " << wedgeTechniqueName(kind);
     }
   }
 }
@@ -196,7 +201,7 @@ TEST(WedgeOracle, EyeInsideShadowOrWedgeUsesZFail) {
   for (const Case& c : cases) {
     const Frame f = makeFrame(tableScene(c.eye, c.target), 240, 160, 256);
     const WedgeFrame wedges =
-        buildWedgeFrame(TechniqueOptions{}, f.scene, f.scene.lights[0], f.view);
+        buildWedgeFrame(WedgeFrameOptions{}, f.scene, f.scene.lights[0], f.view, f.eye);
     bool eye_in_wedge = false;
     for (const Wedge& w : wedges.wedges) {
       const dvec3 e(c.eye);  // the wedge is the region inside its four planes (wedge_frame.cpp)
@@ -215,14 +220,13 @@ TEST(WedgeOracle, EyeInsideShadowOrWedgeUsesZFail) {
     EXPECT_GT(umbra, 500u) << c.what;
     EXPECT_GT(lit, 500u) << c.what;
     EXPECT_GT(penumbra, 500u) << c.what;
-    for (TechniqueKind kind : {TechniqueKind::WedgeThreePass, TechniqueKind::WedgeSinglePass}) {
-      const std::string what = std::string(c.what) + " " + techniqueName(kind);
-      TechniqueOptions o;
-      o.kind = kind;
+    for (WedgeAlgorithm kind : {WedgeAlgorithm::ThreePass, WedgeAlgorithm::SinglePass}) {
+      const std::string what = std::string(c.what) + " " + wedgeTechniqueName(kind);
+      WedgeOptions o;
       const Light& light = f.scene.lights[0];
-      const WedgeLi automatic = renderWedgeLi(o, f.scene, light, f.view, f.eye);
+      const WedgeLi automatic = renderWedgeLi(kind, o, f.scene, light, f.view, f.eye);
       o.volume_mode = VolumeMode::ZFail;
-      const WedgeLi zfail = renderWedgeLi(o, f.scene, light, f.view, f.eye);
+      const WedgeLi zfail = renderWedgeLi(kind, o, f.scene, light, f.view, f.eye);
       if (c.inside) {
         EXPECT_TRUE(automatic.li == zfail.li) << what << ": auto did not pick z-fail";
       }
@@ -270,12 +274,12 @@ TEST(WedgeOracle, OpenMeshPenumbraIsNotDoubled) {
                                           vec3(-1.0f, 0.0f, -1.0f)),
                             240, 160, 256);
   ASSERT_FALSE(f.scene.meshes[1].closed);
-  for (TechniqueKind kind : kWedgeKinds) {
+  for (WedgeAlgorithm kind : kWedgeKinds) {
     const OracleError e = measure(f, render(f, kind).visibility);
-    report("dome", techniqueName(kind), e);
+    report("dome", wedgeTechniqueName(kind), e);
     EXPECT_GT(e.penumbra_pixels, 500u);
-    EXPECT_LE(e.covered, kMaxMaeCovered) << techniqueName(kind);
-    EXPECT_LE(e.penumbra, kMaxMaePenumbra) << techniqueName(kind);
+    EXPECT_LE(e.covered, kMaxMaeCovered) << wedgeTechniqueName(kind);
+    EXPECT_LE(e.penumbra, kMaxMaePenumbra) << wedgeTechniqueName(kind);
   }
 }
 
@@ -300,11 +304,11 @@ TEST(WedgeOracle, LightInsideOpenMeshStillCasts) {
   }
   EXPECT_GT(umbra, 2000u);
   EXPECT_GT(lit, 2000u);
-  for (TechniqueKind kind : {TechniqueKind::WedgeThreePass, TechniqueKind::WedgeSinglePass}) {
+  for (WedgeAlgorithm kind : {WedgeAlgorithm::ThreePass, WedgeAlgorithm::SinglePass}) {
     const OracleError e = measure(f, render(f, kind).visibility);
-    report("globe", techniqueName(kind), e);
-    EXPECT_LE(e.covered, kMaxMaeCovered) << techniqueName(kind);
-    EXPECT_LE(e.penumbra, kMaxMaePenumbra) << techniqueName(kind);
+    report("globe", wedgeTechniqueName(kind), e);
+    EXPECT_LE(e.covered, kMaxMaeCovered) << wedgeTechniqueName(kind);
+    EXPECT_LE(e.penumbra, kMaxMaePenumbra) << wedgeTechniqueName(kind);
   }
 }
 
@@ -365,7 +369,7 @@ TEST(WedgeOracle, SplitVertexNotchIsNotDark) {
   std::vector<double> darker(std::size(kWedgeKinds), 0.0);
   std::vector<size_t> much_darker(std::size(kWedgeKinds), 0);
   std::vector<Image<float>> images;
-  for (TechniqueKind kind : kWedgeKinds) images.push_back(render(f, kind).visibility);
+  for (WedgeAlgorithm kind : kWedgeKinds) images.push_back(render(f, kind).visibility);
   for (int y = 0; y < f.view.height; ++y) {
     for (int x = 0; x < f.view.width; ++x) {
       const size_t i = size_t(y) * size_t(f.view.width) + size_t(x);
@@ -389,9 +393,9 @@ TEST(WedgeOracle, SplitVertexNotchIsNotDark) {
     const double fraction = double(much_darker[k]) / double(notch);
     std::printf("[ wedges   ] sliver notch %-12s %zu px, darker than the oracle by %.3f on "
                 "average, %.1f %% by more than 0.25\n",
-                techniqueName(kWedgeKinds[k]).c_str(), notch, mean, 100.0 * fraction);
-    EXPECT_LT(mean, 0.2) << techniqueName(kWedgeKinds[k]);
-    EXPECT_LT(fraction, 0.25) << techniqueName(kWedgeKinds[k]);
+                wedgeTechniqueName(kWedgeKinds[k]).c_str(), notch, mean, 100.0 * fraction);
+    EXPECT_LT(mean, 0.2) << wedgeTechniqueName(kWedgeKinds[k]);
+    EXPECT_LT(fraction, 0.25) << wedgeTechniqueName(kWedgeKinds[k]);
   }
 }
 
@@ -422,15 +426,15 @@ TEST(WedgeOracle, SharedModelScenesRenderWithoutLightLeaks) {
     const Frame f = makeFrame(loadSceneFile(file.string()), 240, 160, 64);
     const std::string scene = file.stem().string();
     const bool eye_outside =
-        render(f, TechniqueKind::WedgeThreePass).visibility ==
-        render(f, TechniqueKind::WedgeThreePass, VolumeMode::ZPass).visibility;
-    for (TechniqueKind kind : kWedgeKinds) {
-      if (kind == TechniqueKind::Wedge2002 && !eye_outside) continue;
+        render(f, WedgeAlgorithm::ThreePass).visibility ==
+        render(f, WedgeAlgorithm::ThreePass, VolumeMode::ZPass).visibility;
+    for (WedgeAlgorithm kind : kWedgeKinds) {
+      if (kind == WedgeAlgorithm::Original2002 && !eye_outside) continue;
       const OracleError e = measure(f, render(f, kind).visibility);
-      report(scene, techniqueName(kind), e);
-      EXPECT_LE(e.covered, kMaxCovered) << scene << " " << techniqueName(kind);
-      EXPECT_LE(e.leak_fraction, kMaxLeakFraction) << scene << " " << techniqueName(kind);
-      EXPECT_LE(e.largest_leak, kMaxLeakGroup) << scene << " " << techniqueName(kind);
+      report(scene, wedgeTechniqueName(kind), e);
+      EXPECT_LE(e.covered, kMaxCovered) << scene << " " << wedgeTechniqueName(kind);
+      EXPECT_LE(e.leak_fraction, kMaxLeakFraction) << scene << " " << wedgeTechniqueName(kind);
+      EXPECT_LE(e.largest_leak, kMaxLeakGroup) << scene << " " << wedgeTechniqueName(kind);
     }
   }
 }

@@ -127,7 +127,7 @@ int runBench(const BenchArgs& args) {
   options.tile_levels = args.tile_levels;
   options.implementations.clear();
   for (const std::string& name : args.techniques)
-    options.implementations.push_back(parseTechniqueName(name));
+    options.implementations.push_back(findTechnique(name).name);
   options.cull_modes.clear();
   for (const std::string& name : args.cull) options.cull_modes.push_back(parseCullMode(name));
   options.original_2002 = !args.no_2002;

@@ -17,5 +17,6 @@ Subcommand addRenderCommand(CLI::App& app);
 Subcommand addCompareCommand(CLI::App& app);
 Subcommand addScenesCommand(CLI::App& app);
 Subcommand addBenchCommand(CLI::App& app);
+Subcommand addTechniquesCommand(CLI::App& app);
 
 }  // namespace penumbra::cli

@@ -29,6 +29,7 @@ int run(int argc, char** argv) {
       penumbra::cli::addRenderCommand(app),
       penumbra::cli::addCompareCommand(app),
       penumbra::cli::addScenesCommand(app),
+      penumbra::cli::addTechniquesCommand(app),
       penumbra::cli::addBenchCommand(app),
   };
   // CLI11 would call an unknown command word a missing subcommand; name it instead.

@@ -16,26 +16,29 @@
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"
 #include "shadows/technique.h"
+#include "technique_flags.h"
 
 namespace penumbra::cli {
 namespace {
 
+// A technique option on the command line: one CLI11 option per distinct name over all
+// registered techniques, applied to the chosen technique only when given.
+struct TechniqueFlag {
+  std::string name;
+  CLI::Option* option = nullptr;
+  std::string value;  // Integer and Choice options
+  bool given = false;  // Flag options
+};
+
 struct RenderArgs {
   std::string scene;
   std::string output;
-  std::string technique = "wedge-3pass";  // soft shadows; radius-0 lights give hard ones
-  int rays = TechniqueOptions{}.rays;
-  bool hard = false;
-  std::string volume_mode = "auto";
-  std::string cull = cullModeName(TechniqueOptions{}.cull);
-  int tile_size = 1 << TechniqueOptions{}.tile_level;
-  bool smooth = false;
-  bool one_level_stencil = false;
+  std::string technique = kDefaultTechnique;  // soft shadows; radius-0 lights give hard ones
+  std::vector<std::unique_ptr<TechniqueFlag>> technique_flags;
   int width = 0;
   int height = 0;
   int threads = 0;
   bool scalar = false;
-  uint64_t seed = TechniqueOptions{}.seed;
   std::string visibility_exr;
   std::string visibility_png;
   std::string depth_exr;
@@ -64,29 +67,22 @@ std::string defaultOutput(const std::string& scene_name) {
   return "out/" + (name.empty() ? std::string("scene") : name) + ".png";
 }
 
-// Culling tiles are 2^n x 2^n pixels, n = 1..8 (TechniqueOptions::tile_level).
-int tileLevel(int tile_size) {
-  for (int level = 1; level <= 8; ++level)
-    if (tile_size == 1 << level) return level;
-  throw Error(fmt::format("--tile-size {} is not a power of two in 2..256", tile_size));
-}
-
 int runRender(const RenderArgs& args) {
   FrameOptions options;
-  options.technique.kind = parseTechniqueName(args.technique);
-  options.technique.volume_mode = parseVolumeMode(args.volume_mode);
-  options.technique.cull = parseCullMode(args.cull);
-  options.technique.tile_level = tileLevel(args.tile_size);
-  options.technique.smooth_falloff = args.smooth;
-  options.technique.two_level_stencil = !args.one_level_stencil;
-  options.technique.rays = args.rays;
-  options.technique.hard = args.hard;
-  options.technique.seed = args.seed;
-  options.technique.simd = !args.scalar;
-  options.technique.show_progress = !args.quiet;
+  options.technique = TechniqueConfig(args.technique);
+  // Only what was given: an option the chosen technique does not have is an error
+  // (TechniqueConfig::set names the technique's own options), never silently ignored.
+  for (const auto& flag : args.technique_flags) {
+    if (flag->option->count() == 0) continue;
+    const OptionKind kind = techniqueOptionKind(flag->name);
+    options.technique.set(flag->name, kind == OptionKind::Flag ? "true" : flag->value);
+  }
+  options.technique.validate();
+  options.context.simd = !args.scalar;
+  options.context.show_progress = !args.quiet;
+  options.context.threads = args.threads;
   options.width = args.width;
   options.height = args.height;
-  options.threads = args.threads;
   requireExtension(args.output, ".png", "output");
   requireExtension(args.visibility_exr, ".exr", "--visibility");
   requireExtension(args.visibility_png, ".png", "--visibility-png");
@@ -136,24 +132,25 @@ Subcommand addRenderCommand(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", args->output, "Output PNG (default: out/<scene>.png)");
   cmd->add_option("--technique", args->technique,
-                  fmt::format("Shadow technique: {}", fmt::join(techniqueNames(), ", ")))
+                  fmt::format("Shadow technique: {} ('penumbra techniques NAME' lists its "
+                              "options)",
+                              fmt::join(techniqueNames(), ", ")))
       ->capture_default_str();
-  cmd->add_option("--rays", args->rays, "Oracle rays per pixel over the light")
-      ->check(CLI::Range(1, 4096))
-      ->capture_default_str();
-  cmd->add_flag("--hard", args->hard, "Hard shadows from the light centre");
-  cmd->add_option("--volume-mode", args->volume_mode, "Shadow volumes: auto, zpass or zfail")
-      ->capture_default_str();
-  cmd->add_option("--cull", args->cull,
-                  "Wedge tile culling: none, zmax (z-max only) or full (z-min and z-max)")
-      ->capture_default_str();
-  cmd->add_option("--tile-size", args->tile_size,
-                  "Wedge culling tile size in pixels, a power of two in 2..256")
-      ->capture_default_str();
-  cmd->add_flag("--smooth", args->smooth, "Wedges: smooth falloff s' = 3s^2 - 2s^3");
-  cmd->add_flag("--one-level-stencil", args->one_level_stencil,
-                "Umbra pixel by pixel, as the papers' passes (default: tiles a volume polygon "
-                "covers and passes whole take one coarse stencil write)");
+  for (const TechniqueOptionUse& use : techniqueOptionUses()) {
+    auto flag = std::make_unique<TechniqueFlag>();
+    flag->name = use.spec->name;
+    const std::string help = fmt::format("{} [{}]", use.spec->help, fmt::join(use.techniques, ", "));
+    if (use.spec->kind == OptionKind::Flag) {
+      flag->option = cmd->add_flag("--" + use.spec->name, flag->given, help);
+    } else {
+      flag->option = cmd->add_option("--" + use.spec->name, flag->value, help);
+      flag->option->type_name(use.spec->kind == OptionKind::Integer
+                                  ? "INT"
+                                  : fmt::format("{}", fmt::join(use.spec->choices, "|")));
+    }
+    flag->option->group("Technique options");
+    args->technique_flags.push_back(std::move(flag));
+  }
   cmd->add_option("--width", args->width, "Image width (default: the scene's)")
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height (default: the scene's)")
@@ -162,8 +159,6 @@ Subcommand addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   cmd->add_flag("--scalar", args->scalar, "Run the scalar twins of the SIMD kernels");
-  cmd->add_option("--seed", args->seed, "Random seed of the oracle's ray directions")
-      ->capture_default_str();
   cmd->add_option("--visibility", args->visibility_exr,
                   "Visibility EXR of light 0 (light i > 0: name.i.exr)");
   cmd->add_option("--visibility-png", args->visibility_png,

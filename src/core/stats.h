@@ -9,58 +9,68 @@
 
 namespace penumbra {
 
+// Every counter, declared once: X(name, description). The struct's fields, adding, comparing,
+// the stats JSON, the sweep's CSV and the terminal summary all walk this list, so a technique
+// that needs a new counter adds one line here.
+#define PENUMBRA_STATS_COUNTERS(X)                                                               \
+  X(pixels_rasterized, "(primitive, pixel) pairs inside a primitive, on screen")                 \
+  X(z_reads, "depth-buffer reads")                                                               \
+  X(stencil_writes, "stencil or LI-buffer writes")                                               \
+  X(tiles_tested, "(primitive, tile) pairs given to the tile test")                              \
+  X(tiles_culled, "of those, the ones culled before any pixel")                                  \
+  X(tiles_accepted, "of the others, the ones a shadow-volume polygon covers and passes whole: "  \
+                    "one coarse stencil write, no pixel")                                        \
+  X(silhouette_edges, "silhouette edges seen from the light centre")                             \
+  X(wedges, "penumbra wedges built")                                                             \
+  X(triangles, "triangles set up for rasterization (after clipping)")                            \
+  X(rays, "oracle shadow rays (incl. ones its surface blocks untraced)")                         \
+  /* Pixels whose depth point was tested against a wedge, and of those the ones truly inside */  \
+  /* it. Their ratio is the distance from perfect culling (2004 paper, section 4). */            \
+  X(penumbra_tests, "pixels whose point was tested against a wedge")                             \
+  X(penumbra_inside, "of those, the ones inside the wedge")
+
 struct Stats {
-  uint64_t pixels_rasterized = 0;  // (primitive, pixel) pairs inside a primitive, on screen
-  uint64_t z_reads = 0;            // depth-buffer reads
-  uint64_t stencil_writes = 0;     // stencil or LI-buffer writes
-  uint64_t tiles_tested = 0;       // (primitive, tile) pairs given to the tile test
-  uint64_t tiles_culled = 0;       // of those, the ones culled before any pixel
-  uint64_t tiles_accepted = 0;     // of the others, the ones a shadow-volume polygon covers and
-                                   // passes whole: one coarse stencil write, no pixel
-  uint64_t silhouette_edges = 0;   // silhouette edges seen from the light centre
-  uint64_t wedges = 0;             // penumbra wedges built
-  uint64_t triangles = 0;          // triangles set up for rasterization (after clipping)
-  uint64_t rays = 0;               // oracle shadow rays (incl. ones its surface blocks untraced)
-  // Penumbra wedges: pixels whose depth point was tested against a wedge, and of those the ones
-  // truly inside it. Their ratio is the distance from perfect culling (2004 paper, section 4).
-  uint64_t penumbra_tests = 0;
-  uint64_t penumbra_inside = 0;
+#define PENUMBRA_STATS_FIELD(name, description) uint64_t name = 0;
+  PENUMBRA_STATS_COUNTERS(PENUMBRA_STATS_FIELD)
+#undef PENUMBRA_STATS_FIELD
   // Wall-clock milliseconds per named pass, in the order the passes ran. Not deterministic.
   std::vector<std::pair<std::string, double>> time_ms;
 
   // Adds the integer counters of `o` (not its timings).
-  void addCounters(const Stats& o) {
-    pixels_rasterized += o.pixels_rasterized;
-    z_reads += o.z_reads;
-    stencil_writes += o.stencil_writes;
-    tiles_tested += o.tiles_tested;
-    tiles_culled += o.tiles_culled;
-    tiles_accepted += o.tiles_accepted;
-    silhouette_edges += o.silhouette_edges;
-    wedges += o.wedges;
-    triangles += o.triangles;
-    rays += o.rays;
-    penumbra_tests += o.penumbra_tests;
-    penumbra_inside += o.penumbra_inside;
-  }
+  void addCounters(const Stats& o);
   // Adds counters and appends timings, for summing a technique's passes into a frame.
   void add(const Stats& o) {
     addCounters(o);
     time_ms.insert(time_ms.end(), o.time_ms.begin(), o.time_ms.end());
   }
-  bool sameCounters(const Stats& o) const {
-    return pixels_rasterized == o.pixels_rasterized && z_reads == o.z_reads &&
-           stencil_writes == o.stencil_writes && tiles_tested == o.tiles_tested &&
-           tiles_culled == o.tiles_culled && tiles_accepted == o.tiles_accepted &&
-           silhouette_edges == o.silhouette_edges &&
-           wedges == o.wedges && triangles == o.triangles &&
-           penumbra_tests == o.penumbra_tests && penumbra_inside == o.penumbra_inside && rays == o.rays;
-  }
+  bool sameCounters(const Stats& o) const;
   double totalMs() const {
     double t = 0;
     for (const auto& [name, ms] : time_ms) t += ms;
     return t;
   }
 };
+
+// The counters as a table, in declaration order, for code that walks them by name.
+struct StatsCounter {
+  const char* name;
+  const char* description;
+  uint64_t Stats::*field;
+};
+inline constexpr StatsCounter kStatsCounters[] = {
+#define PENUMBRA_STATS_ENTRY(name, description) {#name, description, &Stats::name},
+    PENUMBRA_STATS_COUNTERS(PENUMBRA_STATS_ENTRY)
+#undef PENUMBRA_STATS_ENTRY
+};
+
+inline void Stats::addCounters(const Stats& o) {
+  for (const StatsCounter& c : kStatsCounters) this->*c.field += o.*c.field;
+}
+
+inline bool Stats::sameCounters(const Stats& o) const {
+  for (const StatsCounter& c : kStatsCounters)
+    if (this->*c.field != o.*c.field) return false;
+  return true;
+}
 
 }  // namespace penumbra

@@ -19,6 +19,8 @@
 #include "render/shading_reuse.h"
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"
+#include "shadows/reference/reference_technique.h"
+#include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
 namespace {
@@ -52,7 +54,7 @@ std::string utcNow() {
 // One configuration while it is being measured: its runs' times, per pass, before the medians.
 struct Pending {
   SweepRow row;
-  TechniqueOptions options;
+  TechniqueConfig options;
   std::vector<double> total_ms, cpu_ms;
   std::vector<std::string> pass_order;
   std::map<std::string, std::vector<double>> pass_runs;
@@ -79,32 +81,33 @@ ExactDifference compareVisibility(const Visibilities& a, const Visibilities& b) 
 
 // The only place where the sweep builds technique options: a row's configuration (kind,
 // culling mode, tile level, oracle rays) plus the evaluation's fixed choices.
-TechniqueOptions techniqueOptionsFor(const SweepOptions& o, const SweepRow& row) {
-  TechniqueOptions t;
-  t.kind = row.kind;
-  t.simd = o.simd;
-  if (row.kind == TechniqueKind::Reference) {
-    t.rays = row.rays;  // everything else as the oracle's defaults
-    return t;
+TechniqueConfig techniqueOptionsFor(const SweepOptions& o, const SweepRow& row) {
+  TechniqueConfig config(row.kind);
+  if (row.kind == kSweepOracle) {
+    config.options<ReferenceOptions>().rays = row.rays;  // everything else as its defaults
+    return config;
   }
+  WedgeOptions& t = config.options<WedgeOptions>();
   t.cull = row.cull;
   if (row.tile_level > 0) t.tile_level = row.tile_level;  // wedge-2002: the default level
   t.smooth_falloff = o.smooth_falloff;
   t.two_level_stencil = o.two_level_stencil;
   t.umbra_tile_level = 0;  // the umbra pass at the swept tile size too
-  t.light_count = 1;       // each light has its own LI buffer (renderShadows per light)
-  return t;
+  return config;
 }
 
-// Runs the technique for every light of the scene once; counters summed, passes appended.
-Stats runOnce(const TechniqueOptions& options, const Scene& scene, const View& view,
-              const EyeBuffers& eye, Visibilities* visibility, double& ms, double& cpu_ms) {
+// Runs the technique for every light of the scene once; counters summed, passes appended. The
+// technique is prepared within the timed run, as the paper's comparison with the oracle counts
+// the oracle's BVH build in its frame.
+Stats runOnce(const TechniqueConfig& options, const RenderContext& context, const Scene& scene,
+              const View& view, const EyeBuffers& eye, Visibilities* visibility, double& ms,
+              double& cpu_ms) {
   Stats stats;
   if (visibility) visibility->lights.clear();
   const double cpu_start = cpuSeconds();
   const auto start = std::chrono::steady_clock::now();
   for (const Light& light : scene.lights) {
-    TechniqueResult result = renderShadows(options, scene, light, view, eye);
+    TechniqueResult result = renderShadows(options, scene, light, view, eye, context);
     stats.add(result.stats);
     if (visibility) visibility->lights.push_back(std::move(result.visibility));
   }
@@ -157,11 +160,11 @@ void checkOptions(const SweepOptions& o) {
   for (int level : o.tile_levels)
     PENUMBRA_CHECK(level >= 1 && level <= 8, "sweep: tile level {} is outside 1..8 (2x2..256x256)",
                    level);
-  for (TechniqueKind kind : o.implementations)
-    PENUMBRA_CHECK(kind == TechniqueKind::WedgeThreePass || kind == TechniqueKind::WedgeSinglePass,
+  for (const std::string& kind : o.implementations)
+    PENUMBRA_CHECK(kind == kSweepThreePass || kind == kSweepSinglePass,
                    "sweep: '{}' is not a restructured wedge implementation (wedge-3pass, "
                    "wedge-1pass)",
-                   techniqueName(kind));
+                   kind);
 }
 
 // Rows of one scene, measured in rounds: every configuration once per round, so a neighbour's
@@ -177,6 +180,8 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
   log(fmt::format("{}: {} triangles, {} light(s), loaded in {:.1f} s", scene_name,
                   scene.triangleCount(), scene.lights.size(), secondsSince(load_start)));
 
+  RenderContext context;
+  context.simd = o.simd;
   std::vector<double> eye_runs;
   EyeBuffers eye;
   for (int r = 0; r < o.repeat; ++r) {
@@ -191,13 +196,13 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
   std::stable_sort(modes.begin(), modes.end(), [](CullMode a, CullMode b) {
     return a == CullMode::None && b != CullMode::None;
   });
-  std::vector<TechniqueKind> kinds = o.implementations;
-  std::stable_sort(kinds.begin(), kinds.end(), [](TechniqueKind a, TechniqueKind b) {
-    return a == TechniqueKind::WedgeThreePass && b != TechniqueKind::WedgeThreePass;
+  std::vector<std::string> kinds = o.implementations;
+  std::stable_sort(kinds.begin(), kinds.end(), [](const std::string& a, const std::string& b) {
+    return a == kSweepThreePass && b != kSweepThreePass;
   });
 
   std::vector<Pending> configs;
-  auto addConfig = [&](TechniqueKind kind, CullMode cull, int level) {
+  auto addConfig = [&](const std::string& kind, CullMode cull, int level) {
     Pending p;
     p.row.scene = scene.name.empty() ? scene_name : scene.name;
     p.row.width = o.width;
@@ -209,17 +214,17 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
     p.options = techniqueOptionsFor(o, p.row);
     configs.push_back(std::move(p));
   };
-  for (TechniqueKind kind : kinds)
+  for (const std::string& kind : kinds)
     for (CullMode cull : modes)
       for (int level : o.tile_levels) addConfig(kind, cull, level);
-  if (o.original_2002) addConfig(TechniqueKind::Wedge2002, CullMode::None, 0);
+  if (o.original_2002) addConfig(kSweep2002, CullMode::None, 0);
 
   std::unique_ptr<ProgressBar> bar = std::make_unique<ProgressBar>(
       "sweep " + scene_name,
       uint64_t(configs.size()) * uint64_t(o.repeat) + (run_oracle ? uint64_t(o.oracle_repeat) : 0),
       o.show_progress);
 
-  std::map<TechniqueKind, Visibilities> uncull_reference;  // first CullMode::None run per kind
+  std::map<std::string, Visibilities> uncull_reference;  // first CullMode::None run per kind
   std::optional<Visibilities> three_pass_reference;
   Visibilities shade_visibility;
   for (int round = 0; round < o.repeat; ++round) {
@@ -228,11 +233,11 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
       Visibilities visibility;
       const bool first = round == 0;
       const Stats stats =
-          runOnce(p.options, scene, view, eye, first ? &visibility : nullptr, ms, cpu_ms);
+          runOnce(p.options, context, scene, view, eye, first ? &visibility : nullptr, ms, cpu_ms);
       record(p, stats, ms, cpu_ms);
       bar->add();
       if (!first) continue;
-      const bool restructured = p.row.kind != TechniqueKind::Wedge2002;
+      const bool restructured = p.row.kind != kSweep2002;
       if (restructured) {
         auto it = uncull_reference.find(p.row.kind);
         if (it == uncull_reference.end()) {
@@ -241,7 +246,7 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
         }
         p.row.cull_mismatch_pixels = int64_t(compareVisibility(it->second, visibility).differing);
       }
-      if (!three_pass_reference && p.row.kind == TechniqueKind::WedgeThreePass &&
+      if (!three_pass_reference && p.row.kind == kSweepThreePass &&
           p.row.cull == CullMode::None)
         three_pass_reference = visibility;
       if (three_pass_reference) {
@@ -276,14 +281,14 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
     p.row.width = o.width;
     p.row.height = o.height;
     p.row.lights = int(scene.lights.size());
-    p.row.kind = TechniqueKind::Reference;
+    p.row.kind = kSweepOracle;
     p.row.rays = o.oracle_rays;
     p.options = techniqueOptionsFor(o, p.row);
     for (int r = 0; r < o.oracle_repeat; ++r) {
       double ms = 0, cpu_ms = 0;
       Visibilities visibility;
       const Stats stats =
-          runOnce(p.options, scene, view, eye, r == 0 ? &visibility : nullptr, ms, cpu_ms);
+          runOnce(p.options, context, scene, view, eye, r == 0 ? &visibility : nullptr, ms, cpu_ms);
       record(p, stats, ms, cpu_ms);
       bar->add();
       if (r == 0 && three_pass_reference) {
@@ -318,7 +323,7 @@ double SweepRow::passMs(const std::string& name) const {
   return 0.0;
 }
 
-std::string SweepRow::techniqueLabel() const { return techniqueName(kind); }
+std::string SweepRow::techniqueLabel() const { return kind; }
 
 uint64_t SweepRow::tileRangeReads() const {
   const bool culled = cull != CullMode::None && tile_level > 0;

@@ -17,16 +17,23 @@
 
 #include "core/stats.h"
 #include "shadows/technique.h"
+#include "shadows/wedge/wedge_culling.h"
 
 namespace penumbra {
+
+// The techniques the sweep runs, by their registered names (shadows/technique.h).
+inline constexpr const char* kSweepThreePass = "wedge-3pass";
+inline constexpr const char* kSweepSinglePass = "wedge-1pass";
+inline constexpr const char* kSweep2002 = "wedge-2002";
+inline constexpr const char* kSweepOracle = "reference";
 
 struct SweepOptions {
   std::vector<std::string> scenes = {"columns", "fractal", "year2002"};
   int width = 640;  // the papers' image size
   int height = 427;
   int repeat = 5;  // timed runs per configuration; the median is reported
-  std::vector<TechniqueKind> implementations = {TechniqueKind::WedgeThreePass,
-                                                TechniqueKind::WedgeSinglePass};
+  std::vector<std::string> implementations = {kSweepThreePass,
+                                                kSweepSinglePass};
   std::vector<CullMode> cull_modes = {CullMode::None, CullMode::ZMax, CullMode::Full};
   std::vector<int> tile_levels = {1, 2, 3, 4, 5, 6, 7, 8};  // tiles of 2^n x 2^n pixels
   bool original_2002 = true;  // one wedge-2002 configuration per scene (Figure 10a)
@@ -35,7 +42,7 @@ struct SweepOptions {
   int oracle_repeat = 1;  // the oracle takes ~1 s a run on 2 cores
   bool smooth_falloff = false;
   // The 2004 paper's passes: every umbra pixel is depth-tested and written. true: the two-level
-  // stencil of TechniqueOptions::two_level_stencil (full culling only; stencil writes then
+  // stencil of WedgeOptions::two_level_stencil (full culling only; stencil writes then
   // change with culling, which the paper's evaluation says they do not).
   bool two_level_stencil = false;
   bool simd = true;
@@ -51,7 +58,7 @@ struct SweepRow {
   std::string scene;
   int width = 0, height = 0;
   int lights = 0;
-  TechniqueKind kind = TechniqueKind::WedgeThreePass;
+  std::string kind = kSweepThreePass;  // a technique name (shadows/technique.h)
   CullMode cull = CullMode::None;  // wedge-2002 and the oracle: None
   int tile_level = 0;              // 0: not applicable (wedge-2002, oracle)
   int rays = 0;                    // the oracle's rays per pixel

@@ -13,7 +13,7 @@
 namespace penumbra {
 namespace {
 
-const SweepRow* findRow(const std::vector<const SweepRow*>& rows, TechniqueKind kind, CullMode cull,
+const SweepRow* findRow(const std::vector<const SweepRow*>& rows, const std::string& kind, CullMode cull,
                         int level) {
   for (const SweepRow* r : rows)
     if (r->kind == kind && r->cull == cull && r->tile_level == level) return r;
@@ -23,7 +23,7 @@ const SweepRow* findRow(const std::vector<const SweepRow*>& rows, TechniqueKind 
 enum class Best { Time, Memory, MemoryWithTiles };
 
 // The fastest (or least memory-hungry) level of one implementation and culling mode.
-const SweepRow* bestRow(const std::vector<const SweepRow*>& rows, TechniqueKind kind, CullMode cull,
+const SweepRow* bestRow(const std::vector<const SweepRow*>& rows, const std::string& kind, CullMode cull,
                         Best by) {
   const SweepRow* best = nullptr;
   for (const SweepRow* r : rows) {
@@ -48,7 +48,7 @@ const SweepRow* bestRow(const std::vector<const SweepRow*>& rows, TechniqueKind 
 }
 
 // The reference "no culling" row: None at the largest level (no tile splitting timed).
-const SweepRow* uncullRow(const std::vector<const SweepRow*>& rows, TechniqueKind kind) {
+const SweepRow* uncullRow(const std::vector<const SweepRow*>& rows, const std::string& kind) {
   const SweepRow* best = nullptr;
   for (const SweepRow* r : rows)
     if (r->kind == kind && r->cull == CullMode::None && r->tile_level > 0 &&
@@ -61,8 +61,8 @@ double ratio(double a, double b) { return b > 0 ? a / b : 0.0; }
 
 // The pass that culling speeds up: the penumbra pass of the three-pass implementation, the one
 // pass of the single-pass implementation.
-std::string culledPass(TechniqueKind kind) {
-  return kind == TechniqueKind::WedgeThreePass ? "penumbra" : "single-pass";
+std::string culledPass(const std::string& kind) {
+  return kind == kSweepThreePass ? "penumbra" : "single-pass";
 }
 
 std::string csvField(const std::string& text) {
@@ -93,9 +93,9 @@ std::vector<SweepSceneSummary> summarizeSweep(const SweepResult& result) {
     const std::vector<const SweepRow*>& rows = by_scene[scene];
     SweepSceneSummary s;
     s.scene = scene;
-    const SweepRow* original = findRow(rows, TechniqueKind::Wedge2002, CullMode::None, 0);
+    const SweepRow* original = findRow(rows, kSweep2002, CullMode::None, 0);
     double fastest_wedge_frame = 0;
-    for (TechniqueKind kind : {TechniqueKind::WedgeThreePass, TechniqueKind::WedgeSinglePass}) {
+    for (const std::string kind : {kSweepThreePass, kSweepSinglePass}) {
       const SweepRow* none = uncullRow(rows, kind);
       if (!none) continue;
       SweepSceneSummary::Implementation impl;
@@ -134,8 +134,8 @@ std::vector<SweepSceneSummary> summarizeSweep(const SweepResult& result) {
     double writes = 0, reads = 0, accesses = 0, accesses_unculled = 0;
     int levels = 0;
     for (int level = 3; level <= 5; ++level) {
-      const SweepRow* three = findRow(rows, TechniqueKind::WedgeThreePass, CullMode::Full, level);
-      const SweepRow* single = findRow(rows, TechniqueKind::WedgeSinglePass, CullMode::Full, level);
+      const SweepRow* three = findRow(rows, kSweepThreePass, CullMode::Full, level);
+      const SweepRow* single = findRow(rows, kSweepSinglePass, CullMode::Full, level);
       if (!three || !single) continue;
       writes += 1.0 - ratio(double(single->counters.stencil_writes),
                             double(three->counters.stencil_writes));
@@ -143,7 +143,7 @@ std::vector<SweepSceneSummary> summarizeSweep(const SweepResult& result) {
       accesses += 1.0 - ratio(double(single->memoryAccesses()), double(three->memoryAccesses()));
       // Three-pass reads = umbra reads + penumbra reads (one per penumbra test).
       const SweepRow* three_none =
-          findRow(rows, TechniqueKind::WedgeThreePass, CullMode::None, level);
+          findRow(rows, kSweepThreePass, CullMode::None, level);
       if (three_none) {
         const double umbra_unculled =
             double(three_none->counters.z_reads - three_none->counters.penumbra_tests);
@@ -160,7 +160,7 @@ std::vector<SweepSceneSummary> summarizeSweep(const SweepResult& result) {
       s.single_fewer_accesses_unculled_umbra = accesses_unculled / levels;
     }
     for (const SweepRow* r : rows)
-      if (r->kind == TechniqueKind::Reference && fastest_wedge_frame > 0)
+      if (r->kind == kSweepOracle && fastest_wedge_frame > 0)
         s.oracle_frame_ratio = ratio(r->frame_ms, fastest_wedge_frame);
     summaries.push_back(std::move(s));
   }
@@ -233,7 +233,7 @@ std::string sweepSummaryMarkdown(const SweepResult& result) {
       md += fmt::format(
           "| {} | {} | {} / {} | {} | {:.2f}x | {:.2f}x / {:.2f}x | {:.2f}x | {:.2f}x | {:.1f} / "
           "{:.1f} / {:.2f} |\n",
-          s.scene, techniqueName(i.kind), tile(i.best_level_memory),
+          s.scene, i.kind, tile(i.best_level_memory),
           tile(i.best_level_memory_tiles), tile(i.best_level_time), i.restructured_speedup,
           i.culling_speedup, i.culling_speedup_pass, i.zmax_speedup_pass, i.speedup_vs_2002,
           i.none_tests_per_inside, i.zmax_tests_per_inside, i.full_tests_per_inside);
@@ -248,7 +248,7 @@ std::string sweepSummaryMarkdown(const SweepResult& result) {
                       100 * s.single_fewer_stencil_writes, 100 * s.single_fewer_z_reads,
                       100 * s.single_fewer_accesses, 100 * s.single_fewer_accesses_unculled_umbra);
   for (const SweepRow& r : result.rows) {
-    if (r.kind != TechniqueKind::Reference) continue;
+    if (r.kind != kSweepOracle) continue;
     for (const SweepSceneSummary& s : summaries)
       if (s.scene == r.scene)
         md += fmt::format(

@@ -15,7 +15,7 @@ namespace penumbra {
 struct SweepSceneSummary {
   std::string scene;
   struct Implementation {
-    TechniqueKind kind = TechniqueKind::WedgeThreePass;
+    std::string kind = kSweepThreePass;  // a technique name (shadows/technique.h)
     int best_level_memory = 0;        // full culling, fewest z reads + stencil writes
     int best_level_memory_tiles = 0;  // same, tile z-range reads counted too
     int best_level_time = 0;          // full culling, fastest technique

@@ -7,8 +7,10 @@
 // inside the image; a tile of only background pixels has z-min = z-max = 0.
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "core/image.h"
+#include "core/math.h"
 
 namespace penumbra {
 
@@ -41,6 +43,11 @@ struct EyeBuffers {
   // Global triangle id: triangles are numbered mesh after mesh in Scene::meshes order;
   // kNoPrimitive where the background shows.
   Image<uint32_t> primitive;
+  // The frame's clip-space vertices: View::toClip of every mesh's positions, mesh after mesh,
+  // computed once by the eye pass. Shadow volumes and wedges take their finite vertices from
+  // here, so a light cap is bit-identical to the surface it comes from by construction.
+  std::vector<vec4> clip_vertices;
+  std::vector<uint32_t> mesh_vertex_base;  // per mesh, the index of its vertex 0 above
 };
 
 }  // namespace penumbra

@@ -114,13 +114,19 @@ void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
 
 void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options) {
+  std::vector<SetupTriangle> setup = setupTriangles(triangles, depth.width(), depth.height());
+  stats.triangles += setup.size();
+  rasterizeStencil(setup, depth, stencil, stats, options);
+}
+
+void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer& depth,
+                      Image<int32_t>& stencil, Stats& stats, const StencilOptions& options) {
   const int width = depth.width(), height = depth.height();
   PENUMBRA_CHECK(stencil.width() == width && stencil.height() == height,
                  "stencil {}x{} does not match depth {}x{}", stencil.width(), stencil.height(),
                  width, height);
   PENUMBRA_DCHECK(std::all_of(stencil.data(), stencil.data() + stencil.size(),
                               [](int32_t s) { return s == 0; }));
-  const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
   std::vector<TileCounts> counts(bins.tileCount());
   parallelFor(bins.tileCount(), [&](size_t tile) {
@@ -172,7 +178,6 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
     tile_stencil.storeTo(stencil, box);
   });
   sumInto(counts, stats, true);
-  stats.triangles += setup.size();
 }
 
 void forEachBinTile(const ClipTriangles& triangles, int width, int height,
@@ -181,6 +186,11 @@ void forEachBinTile(const ClipTriangles& triangles, int width, int height,
   std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   stats.triangles += setup.size();
   std::erase_if(setup, [&](const SetupTriangle& t) { return !keep(t); });
+  forEachBinTile(setup, width, height, visit);
+}
+
+void forEachBinTile(const std::vector<SetupTriangle>& setup, int width, int height,
+                    const std::function<void(const TileTriangles&)>& visit) {
   const TileBins bins = binTriangles(setup, width, height);
   parallelFor(bins.tileCount(), [&](size_t tile) {
     if (bins.offsets[tile] == bins.offsets[tile + 1]) return;

@@ -42,6 +42,9 @@ struct StencilOptions {
 // copies of their own, which are stored back, so earlier contents would be lost).
 void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
+// The same for triangles set up already (setupTriangles), which the caller counted.
+void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer& depth,
+                      Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
 
 // The tile loop the passes above are built on, for passes with their own pixel kernels (penumbra
 // wedges): sets up `triangles`, bins those keep(triangle) accepts (a pass that draws only some,
@@ -75,5 +78,8 @@ class TileTriangles {
 void forEachBinTile(const ClipTriangles& triangles, int width, int height,
                     const std::function<bool(const SetupTriangle&)>& keep,
                     const std::function<void(const TileTriangles&)>& visit, Stats& stats);
+// The same for triangles set up (and kept) already; `setup` must outlive the call.
+void forEachBinTile(const std::vector<SetupTriangle>& setup, int width, int height,
+                    const std::function<void(const TileTriangles&)>& visit);
 
 }  // namespace penumbra

@@ -200,7 +200,7 @@ bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex
 void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes, int width,
                   int height, uint8_t flags, std::vector<SetupTriangle>& out) {
   std::array<dvec4, 8> poly;
-  for (int k = 0; k < 3; ++k) poly[k] = dvec4(tris.clip[tris.indices[t * 3 + k]]);
+  for (int k = 0; k < 3; ++k) poly[k] = dvec4(tris.vertex(tris.indices[t * 3 + k]));
   const int count = clipPolygon(poly, 3, planes);
   if (count < 3) return;
   std::array<ScreenVertex, 8> screen;
@@ -255,7 +255,7 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
   // Classify each vertex once when vertices are shared (a mesh's vertex belongs to ~6
   // triangles); when most vertices are unused (shadow volumes: only silhouette vertices and
   // caps), classify the three corners of each triangle instead. Same results either way.
-  const size_t vertex_count = tris.clip.size();
+  const size_t vertex_count = tris.vertexCount();
   const bool per_vertex = tris.indices.size() >= vertex_count;
   std::unique_ptr<ClassifiedVertex[]> classified;
   if (per_vertex) {
@@ -263,7 +263,7 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
     parallelFor((vertex_count + kChunk - 1) / kChunk, [&](size_t c) {
       const size_t begin = c * kChunk, end = std::min(vertex_count, begin + kChunk);
       for (size_t i = begin; i < end; ++i)
-        classified[i] = classify(tris.clip[i], planes, width, height);
+        classified[i] = classify(tris.vertex(uint32_t(i)), planes, width, height);
     });
   }
 
@@ -278,7 +278,7 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
                  [table](uint32_t i) -> const ClassifiedVertex& { return table[i]; }, parts[c]);
     } else {
       setupRange(tris, begin, end, width, height, planes,
-                 [&](uint32_t i) { return classify(tris.clip[i], planes, width, height); },
+                 [&](uint32_t i) { return classify(tris.vertex(i), planes, width, height); },
                  parts[c]);
     }
   });

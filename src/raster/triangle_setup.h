@@ -9,14 +9,37 @@ namespace penumbra {
 
 // Triangles to rasterize: clip-space vertices (core/view.h conventions) and, per triangle, a
 // payload the pass interprets (a primitive id for the eye pass, a signed stencil weight for
-// shadow volumes) and flags.
+// shadow volumes) and flags. Vertices 0 .. shared_count - 1 may live in an array the triangles
+// only borrow (the eye pass's vertices, which every pass of the frame shares); the triangles'
+// own vertices are numbered after them.
 struct ClipTriangles {
-  std::vector<vec4> clip;           // clip-space vertices
+  const vec4* shared = nullptr;     // borrowed vertices; must outlive the triangles' use
+  size_t shared_count = 0;
+  std::vector<vec4> clip;           // own clip-space vertices, numbered from shared_count
   std::vector<uint32_t> indices;    // 3 per triangle
   std::vector<int32_t> payload;     // 1 per triangle
   std::vector<uint8_t> flags;       // 1 per triangle, kCullBackFace...; may be empty (= 0)
 
+  ClipTriangles() = default;
+  explicit ClipTriangles(const std::vector<vec4>& borrowed)
+      : shared(borrowed.data()), shared_count(borrowed.size()) {}
+
   size_t size() const { return payload.size(); }
+  size_t vertexCount() const { return shared_count + clip.size(); }
+  const vec4& vertex(uint32_t i) const {
+    return i < shared_count ? shared[i] : clip[i - shared_count];
+  }
+  uint32_t addVertex(const vec4& v) {
+    clip.push_back(v);
+    return uint32_t(vertexCount() - 1);
+  }
+  // Room for n own vertices; returns the number of the first, to be written via ownVertex.
+  uint32_t appendVertices(size_t n) {
+    const uint32_t first = uint32_t(vertexCount());
+    clip.resize(clip.size() + n);
+    return first;
+  }
+  vec4* ownVertex(uint32_t i) { return clip.data() + (i - shared_count); }
   void add(uint32_t i0, uint32_t i1, uint32_t i2, int32_t value, uint8_t flag = 0) {
     indices.insert(indices.end(), {i0, i1, i2});
     payload.push_back(value);
@@ -36,8 +59,9 @@ struct SetupTriangle {
   int32_t A[3], B[3];
   int64_t C[3];
   // Depth plane over pixel coordinates: depth(sx, sy) = a sx + b sy + c, sx, sy in pixels,
-  // reversed-Z (core/view.h). Computed from the snapped vertices in the input vertex order, so a
-  // triangle drawn twice (eye pass and shadow-volume light cap) gets bit-identical depths.
+  // reversed-Z (core/view.h). Computed from the unsnapped projected vertices (coverage uses the
+  // snapped ones) in the input vertex order, so a triangle drawn twice (eye pass and
+  // shadow-volume light cap) gets bit-identical depths.
   double a, b, c;
   float depth_min, depth_max;    // over the vertices
   int32_t min_x, min_y, max_x, max_y;  // covered pixel box, inclusive, clamped to the image

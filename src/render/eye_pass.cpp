@@ -1,6 +1,7 @@
 #include "render/eye_pass.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -20,11 +21,14 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
   tris.indices.reserve(triangle_count * 3);
   tris.payload.reserve(triangle_count);
   tris.flags.reserve(triangle_count);
+  EyeBuffers eye;
+  eye.mesh_vertex_base.reserve(scene.meshes.size());
   size_t base = 0;
   uint32_t global_id = 0;
   for (const Mesh& mesh : scene.meshes) {
-    // view.toClip is the one transform every pass uses, so a triangle drawn again as a shadow
-    // volume's light cap lands on bit-identical clip coordinates.
+    eye.mesh_vertex_base.push_back(uint32_t(base));
+    // Computed once for the frame: shadow volumes and wedges draw their finite vertices from
+    // these (EyeBuffers::clip_vertices), so a light cap lands on bit-identical coordinates.
     parallelFor((mesh.positions.size() + 4095) / 4096, [&](size_t chunk) {
       const size_t end = std::min(mesh.positions.size(), (chunk + 1) * 4096);
       for (size_t i = chunk * 4096; i < end; ++i)
@@ -42,12 +46,12 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
     }
     base += mesh.positions.size();
   }
-  EyeBuffers eye;
   // rasterizeDepth writes every pixel, background included.
   eye.depth.depth.resizeForOverwrite(view.width, view.height);
   eye.primitive.resizeForOverwrite(view.width, view.height);
   rasterizeDepth(tris, eye.depth.depth, eye.primitive, stats, simd);
   eye.depth.buildTileRanges();
+  eye.clip_vertices = std::move(tris.clip);
   return eye;
 }
 

@@ -1,5 +1,8 @@
 #include "render/frame.h"
 
+#include <chrono>
+#include <utility>
+
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "render/eye_pass.h"
@@ -7,37 +10,48 @@
 
 namespace penumbra {
 
-void renderFrame(const Scene& scene, const FrameOptions& options, FrameResult& frame) {
-  ThreadLimit limit(options.threads);
-  const int width = options.width > 0 ? options.width : scene.settings.width;
-  const int height = options.height > 0 ? options.height : scene.settings.height;
-  frame.view = scene.camera.makeView(width, height);
+FrameRenderer::FrameRenderer(const Scene& scene, FrameOptions options)
+    : scene_(scene), options_(std::move(options)) {
+  ThreadLimit limit(options_.context.threads);
+  const auto start = std::chrono::steady_clock::now();
+  technique_ = prepareTechnique(options_.technique, scene_);
+  prepare_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void FrameRenderer::render(FrameResult& frame) const {
+  const RenderContext& context = options_.context;
+  ThreadLimit limit(context.threads);
+  const int width = options_.width > 0 ? options_.width : scene_.settings.width;
+  const int height = options_.height > 0 ? options_.height : scene_.settings.height;
+  frame.view = scene_.camera.makeView(width, height);
   frame.eye_stats = Stats{};
   frame.total = Stats{};
   // The previous frame's buffers go first: alive while this frame allocates its own, they
-  // made the heap grow into fresh pages every frame (columns 1920x1080 soft-shadow frame: eye
-  // pass 7.1 -> 3.5 ms). The colour image is kept and overwritten (shadeFrameInto).
+  // made the heap grow into fresh pages every frame (bench/README.md). The colour image is
+  // kept and overwritten (shadeFrameInto).
   frame.eye = EyeBuffers{};
   frame.lights.clear();
-  frame.eye = renderEyePass(scene, frame.view, frame.eye_stats, options.technique.simd);
+  frame.eye = renderEyePass(scene_, frame.view, frame.eye_stats, context.simd);
   frame.total.add(frame.eye_stats);
-  frame.lights.reserve(scene.lights.size());
-  for (const Light& light : scene.lights) {
-    frame.lights.push_back(renderShadows(options.technique, scene, light, frame.view, frame.eye));
+  frame.lights.reserve(scene_.lights.size());
+  for (const Light& light : scene_.lights) {
+    frame.lights.push_back(technique_->render(light, frame.view, frame.eye, context));
     frame.total.add(frame.lights.back().stats);
   }
   std::vector<const Image<float>*> visibility;
   for (const TechniqueResult& r : frame.lights) visibility.push_back(&r.visibility);
   {
     PassTimer timer(frame.total, "shade");
-    shadeFrameInto(scene, frame.view, frame.eye, visibility, frame.color,
-                   options.technique.simd);
+    shadeFrameInto(scene_, frame.view, frame.eye, visibility, frame.color, context.simd);
   }
 }
 
 FrameResult renderFrame(const Scene& scene, const FrameOptions& options) {
+  const FrameRenderer renderer(scene, options);
   FrameResult frame;
-  renderFrame(scene, options, frame);
+  renderer.render(frame);
+  frame.total.time_ms.insert(frame.total.time_ms.begin(), {"prepare", renderer.prepareMs()});
   return frame;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // One frame: the eye pass, a shadow technique per light, shading (DESIGN.md data flow).
+#include <memory>
 #include <vector>
 
 #include "core/image.h"
@@ -12,10 +13,10 @@
 namespace penumbra {
 
 struct FrameOptions {
-  TechniqueOptions technique;
-  int width = 0;    // 0: the scene's settings
+  TechniqueConfig technique;  // the technique and its own options
+  int width = 0;              // 0: the scene's settings
   int height = 0;
-  int threads = 0;  // 0: all cores
+  RenderContext context;      // threads, SIMD, progress: every pass obeys them
 };
 
 struct FrameResult {
@@ -27,11 +28,26 @@ struct FrameResult {
   Stats total;                           // eye pass + every light's technique + shading time
 };
 
-FrameResult renderFrame(const Scene& scene, const FrameOptions& options);
+// Renders frame after frame of one scene with one technique, prepared once (per-scene state
+// such as the oracle's BVH: shadows/technique.h). The scene must outlive the renderer and stay
+// unchanged.
+class FrameRenderer {
+ public:
+  FrameRenderer(const Scene& scene, FrameOptions options);
+  // Overwrites every field of `frame`; the colour image keeps its memory when the size is
+  // unchanged, so a frame does not pay for allocating and page-faulting a new image.
+  void render(FrameResult& frame) const;
+  const FrameOptions& options() const { return options_; }
+  double prepareMs() const { return prepare_ms_; }  // preparing the technique for the scene
 
-// The same frame into `frame`, for loops that render frame after frame (a viewer, a benchmark):
-// every field is overwritten, and the colour image keeps its memory when the size is unchanged,
-// so a frame does not pay for allocating and page-faulting a new full-size image.
-void renderFrame(const Scene& scene, const FrameOptions& options, FrameResult& frame);
+ private:
+  const Scene& scene_;
+  FrameOptions options_;
+  std::unique_ptr<PreparedTechnique> technique_;
+  double prepare_ms_ = 0;
+};
+
+// One frame, the technique prepared for it: its preparation is timed as the pass "prepare".
+FrameResult renderFrame(const Scene& scene, const FrameOptions& options);
 
 }  // namespace penumbra

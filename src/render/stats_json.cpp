@@ -1,5 +1,6 @@
 #include "render/stats_json.h"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <thread>
@@ -19,22 +20,11 @@ using nlohmann::json;
 json statsToJson(const Stats& s) {
   json passes = json::array();
   for (const auto& [name, ms] : s.time_ms) passes.push_back({{"pass", name}, {"ms", ms}});
-  return {
-      {"pixels_rasterized", s.pixels_rasterized},
-      {"z_reads", s.z_reads},
-      {"stencil_writes", s.stencil_writes},
-      {"tiles_tested", s.tiles_tested},
-      {"tiles_culled", s.tiles_culled},
-      {"tiles_accepted", s.tiles_accepted},
-      {"silhouette_edges", s.silhouette_edges},
-      {"wedges", s.wedges},
-      {"triangles", s.triangles},
-      {"rays", s.rays},
-      {"penumbra_tests", s.penumbra_tests},
-      {"penumbra_inside", s.penumbra_inside},
-      {"time_ms", passes},
-      {"total_ms", s.totalMs()},
-  };
+  json out = json::object();
+  for (const StatsCounter& c : kStatsCounters) out[c.name] = s.*c.field;
+  out["time_ms"] = passes;
+  out["total_ms"] = s.totalMs();
+  return out;
 }
 
 json vecToJson(const vec3& v) { return json::array({v.x, v.y, v.z}); }
@@ -54,7 +44,7 @@ double meanVisibility(const Image<float>& visibility, const EyeBuffers& eye) {
 }
 
 int effectiveThreads(const FrameOptions& options) {
-  return options.threads > 0 ? options.threads : workerCount();
+  return options.context.threads > 0 ? options.context.threads : workerCount();
 }
 
 std::string passList(const Stats& s) {
@@ -84,43 +74,6 @@ MachineInfo machineInfo() {
   return info;
 }
 
-std::string volumeModeName(VolumeMode mode) {
-  switch (mode) {
-    case VolumeMode::Auto: return "auto";
-    case VolumeMode::ZPass: return "zpass";
-    case VolumeMode::ZFail: return "zfail";
-  }
-  return "unknown";
-}
-
-VolumeMode parseVolumeMode(const std::string& name) {
-  for (VolumeMode mode : {VolumeMode::Auto, VolumeMode::ZPass, VolumeMode::ZFail}) {
-    if (name == volumeModeName(mode)) return mode;
-  }
-  throw Error(fmt::format("unknown volume mode '{}' (known: auto, zpass, zfail)", name));
-}
-
-std::string describeTechnique(const TechniqueOptions& options) {
-  const std::string name = techniqueName(options.kind);
-  const char* stencil = options.two_level_stencil ? "" : ", one-level stencil";
-  switch (options.kind) {
-    case TechniqueKind::ShadowVolume:
-      return fmt::format("{} ({}{})", name, volumeModeName(options.volume_mode), stencil);
-    case TechniqueKind::Reference:
-      return options.hard ? fmt::format("{} (hard)", name)
-                          : fmt::format("{} ({} rays)", name, options.rays);
-    case TechniqueKind::Wedge2002:
-      return fmt::format("{} ({})", name, volumeModeName(options.volume_mode));
-    case TechniqueKind::WedgeThreePass:
-    case TechniqueKind::WedgeSinglePass:
-      return fmt::format("{} ({}, cull {}, {}x{} tiles{})", name,
-                         volumeModeName(options.volume_mode), cullModeName(options.cull),
-                         1 << options.tile_level, 1 << options.tile_level,
-                         options.cull == CullMode::Full ? stencil : "");
-  }
-  return name;
-}
-
 std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
                            const FrameResult& result) {
   const MachineInfo machine = machineInfo();
@@ -135,26 +88,30 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
     entry["stats"] = statsToJson(result.lights[i].stats);
     lights.push_back(std::move(entry));
   }
-  const TechniqueOptions& t = options.technique;
+  const TechniqueConfig& t = options.technique;
+  json technique = {{"name", t.name()},
+                    {"description", t.describe()},
+                    {"soft", t.info().traits.soft},
+                    {"exact", t.info().traits.exact}};
+  for (const OptionSpec& spec : t.info().options.specs()) {
+    std::string key = spec.name;
+    std::replace(key.begin(), key.end(), '-', '_');
+    const std::string value = t.get(spec.name);
+    switch (spec.kind) {
+      case OptionKind::Flag: technique[key] = value == "true"; break;
+      case OptionKind::Integer: technique[key] = std::stoll(value); break;
+      case OptionKind::Choice: technique[key] = value; break;
+    }
+  }
   const json doc = {
       {"scene", scene.name},
       {"triangles", scene.triangleCount()},
       {"meshes", scene.meshes.size()},
       {"width", result.view.width},
       {"height", result.view.height},
-      {"technique",
-       {{"name", techniqueName(t.kind)},
-        {"description", describeTechnique(t)},
-        {"volume_mode", volumeModeName(t.volume_mode)},
-        {"rays", t.rays},
-        {"hard", t.hard},
-        {"seed", t.seed},
-        {"cull", cullModeName(t.cull)},
-        {"tile_size", 1 << t.tile_level},
-        {"smooth_falloff", t.smooth_falloff},
-        {"two_level_stencil", t.two_level_stencil}}},
+      {"technique", technique},
       {"threads", effectiveThreads(options)},
-      {"simd", t.simd},
+      {"simd", options.context.simd},
       {"machine", {{"cpu", machine.cpu_model}, {"cores", machine.cores}}},
       {"eye_pass", statsToJson(result.eye_stats)},
       {"lights", lights},
@@ -179,8 +136,8 @@ std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,
                              const FrameResult& result) {
   std::string line = fmt::format("{} {}x{}, {} triangles, {}, {} threads{}: ", scene.name,
                                  result.view.width, result.view.height, scene.triangleCount(),
-                                 describeTechnique(options.technique), effectiveThreads(options),
-                                 options.technique.simd ? "" : ", scalar");
+                                 options.technique.describe(), effectiveThreads(options),
+                                 options.context.simd ? "" : ", scalar");
   line += fmt::format("eye {:.1f} ms", result.eye_stats.totalMs());
   // Passes of the total that are neither the eye pass's nor a light's (shading, outputs).
   std::map<std::string, int> accounted;
@@ -200,12 +157,16 @@ std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,
     line += fmt::format(", {} {:.1f} ms", name, ms);
   }
   line += fmt::format("; frame {:.1f} ms", result.total.totalMs());
-  const Stats& c = result.total;
-  line += fmt::format(
-      " | pixels {}, z reads {}, stencil writes {}, tiles {} ({} culled, {} accepted whole), "
-      "silhouette edges {}, wedges {}",
-      c.pixels_rasterized, c.z_reads, c.stencil_writes, c.tiles_tested, c.tiles_culled,
-      c.tiles_accepted, c.silhouette_edges, c.wedges);
+  // Every counter the frame touched, by its name with spaces (core/stats.h).
+  const char* separator = " | ";
+  for (const StatsCounter& c : kStatsCounters) {
+    const uint64_t value = result.total.*c.field;
+    if (value == 0) continue;
+    std::string name = c.name;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    line += fmt::format("{}{} {}", separator, name, value);
+    separator = ", ";
+  }
   return line;
 }
 

@@ -14,13 +14,8 @@ struct MachineInfo {
 };
 MachineInfo machineInfo();
 
-// "auto", "zpass", "zfail" and back (throws penumbra::Error naming the known modes).
-std::string volumeModeName(VolumeMode mode);
-VolumeMode parseVolumeMode(const std::string& name);
-// "volume (auto)", "reference (256 rays)", "reference (hard)".
-std::string describeTechnique(const TechniqueOptions& options);
-
-// JSON text: scene, image size, technique and its options, threads, SIMD, machine, the eye
+// JSON text: scene, image size, technique (name, description, what it claims, and each of its
+// options under the option's name with '_' for '-'), threads, SIMD, machine, the eye
 // pass's stats, per light its stats and mean visibility, and the totals. Stats objects hold
 // every counter of core/stats.h under its own name and "time_ms": [{"pass", "ms"}...] in the
 // order the passes ran, plus "total_ms".

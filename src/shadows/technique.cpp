@@ -1,77 +1,101 @@
 #include "shadows/technique.h"
 
+#include <fmt/format.h>
+
 #include "core/error.h"
-#include "shadows/reference/reference.h"
-#include "shadows/volume/shadow_volume.h"
-#include "shadows/wedge/wedge_technique.h"
+#include "shadows/technique_table.h"
 
 namespace penumbra {
+namespace {
 
-TechniqueResult renderShadows(const TechniqueOptions& options, const Scene& scene,
-                              const Light& light, const View& view, const EyeBuffers& eye) {
-  PENUMBRA_CHECK(eye.depth.width() == view.width && eye.depth.height() == view.height,
-                 "eye buffers are {}x{} but the view is {}x{}", eye.depth.width(),
-                 eye.depth.height(), view.width, view.height);
-  switch (options.kind) {
-    case TechniqueKind::Reference:
-      return renderReference(options, scene, light, view, eye);
-    case TechniqueKind::ShadowVolume:
-      return renderShadowVolume(options, scene, light, view, eye);
-    case TechniqueKind::Wedge2002:
-    case TechniqueKind::WedgeThreePass:
-    case TechniqueKind::WedgeSinglePass:
-      return renderWedges(options, scene, light, view, eye);
-  }
-  throw Error("unknown technique");
+// The table's techniques, then the registered ones. Built on first use, so a registration
+// during static initialisation (a test's own technique) finds the table already there.
+std::vector<TechniqueInfo>& registry() {
+  static std::vector<TechniqueInfo> all = builtinTechniques();
+  return all;
 }
 
-namespace {
-struct NamedKind {
-  const char* name;
-  TechniqueKind kind;
-};
-constexpr NamedKind kNames[] = {
-    {"reference", TechniqueKind::Reference},
-    {"volume", TechniqueKind::ShadowVolume},
-    {"wedge-2002", TechniqueKind::Wedge2002},
-    {"wedge-3pass", TechniqueKind::WedgeThreePass},
-    {"wedge-1pass", TechniqueKind::WedgeSinglePass},
-};
+bool answersTo(const TechniqueInfo& info, const std::string& name) {
+  if (info.name == name) return true;
+  for (const std::string& alias : info.aliases)
+    if (alias == name) return true;
+  return false;
+}
+
 }  // namespace
 
-std::string techniqueName(TechniqueKind kind) {
-  for (const auto& n : kNames)
-    if (n.kind == kind) return n.name;
-  return "unknown";
-}
-
-TechniqueKind parseTechniqueName(const std::string& name) {
-  for (const auto& n : kNames)
-    if (name == n.name) return n.kind;
-  std::string known;
-  for (const auto& n : kNames) known += std::string(known.empty() ? "" : ", ") + n.name;
-  throw Error(fmt::format("unknown technique '{}' (known: {})", name, known));
-}
-
-std::string cullModeName(CullMode mode) {
-  switch (mode) {
-    case CullMode::None: return "none";
-    case CullMode::ZMax: return "zmax";
-    case CullMode::Full: return "full";
-  }
-  return "unknown";
-}
-
-CullMode parseCullMode(const std::string& name) {
-  for (CullMode m : {CullMode::None, CullMode::ZMax, CullMode::Full})
-    if (cullModeName(m) == name) return m;
-  throw Error(fmt::format("unknown culling mode '{}' (known: none, zmax, full)", name));
-}
+const std::vector<TechniqueInfo>& techniques() { return registry(); }
 
 std::vector<std::string> techniqueNames() {
   std::vector<std::string> names;
-  for (const auto& n : kNames) names.push_back(n.name);
+  for (const TechniqueInfo& info : registry()) names.push_back(info.name);
   return names;
+}
+
+const TechniqueInfo& findTechnique(const std::string& name) {
+  for (const TechniqueInfo& info : registry())
+    if (answersTo(info, name)) return info;
+  throw Error(fmt::format("unknown technique '{}' (known: {})", name,
+                          fmt::join(techniqueNames(), ", ")));
+}
+
+void registerTechnique(TechniqueInfo info) {
+  PENUMBRA_CHECK(!info.name.empty() && info.prepare, "a technique needs a name and a factory");
+  for (const TechniqueInfo& known : registry()) {
+    PENUMBRA_CHECK(!answersTo(known, info.name), "technique name '{}' is taken", info.name);
+    for (const std::string& alias : info.aliases)
+      PENUMBRA_CHECK(!answersTo(known, alias), "technique name '{}' is taken", alias);
+  }
+  registry().push_back(std::move(info));
+}
+
+TechniqueConfig::TechniqueConfig(const std::string& name)
+    : info_(&findTechnique(name)), options_(info_->options.defaults()) {}
+
+void TechniqueConfig::set(const std::string& option, const std::string& value) {
+  const OptionSpec* spec = info_->options.find(option);
+  if (spec == nullptr) {
+    std::vector<std::string> known;
+    for (const OptionSpec& s : info_->options.specs()) known.push_back("--" + s.name);
+    throw Error(fmt::format("--{} is not an option of technique '{}' ({})", option, info_->name,
+                            known.empty() ? std::string("it has none")
+                                          : fmt::format("its options: {}", fmt::join(known, ", "))));
+  }
+  try {
+    spec->set(options_, value);
+  } catch (const Error& e) {
+    throw Error(fmt::format("technique '{}': {}", info_->name, e.what()));
+  }
+}
+
+std::string TechniqueConfig::get(const std::string& option) const {
+  const OptionSpec* spec = info_->options.find(option);
+  PENUMBRA_CHECK(spec != nullptr, "--{} is not an option of technique '{}'", option, info_->name);
+  return spec->get(options_);
+}
+
+std::string TechniqueConfig::describe() const {
+  const std::string details = info_->options.describe(options_);
+  return details.empty() ? info_->name : fmt::format("{} ({})", info_->name, details);
+}
+
+std::unique_ptr<PreparedTechnique> prepareTechnique(const TechniqueConfig& config,
+                                                    const Scene& scene) {
+  try {
+    config.validate();
+  } catch (const Error& e) {
+    throw Error(fmt::format("technique '{}': {}", config.name(), e.what()));
+  }
+  return config.info().prepare(config.rawOptions(), scene);
+}
+
+TechniqueResult renderShadows(const TechniqueConfig& config, const Scene& scene,
+                              const Light& light, const View& view, const EyeBuffers& eye,
+                              const RenderContext& context) {
+  PENUMBRA_CHECK(eye.depth.width() == view.width && eye.depth.height() == view.height,
+                 "eye buffers are {}x{} but the view is {}x{}", eye.depth.width(),
+                 eye.depth.height(), view.width, view.height);
+  return prepareTechnique(config, scene)->render(light, view, eye, context);
 }
 
 }  // namespace penumbra

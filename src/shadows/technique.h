@@ -2,71 +2,36 @@
 // The one technique contract (DESIGN.md): given the eye pass's buffers, a light, the scene and
 // the view, a technique writes the light visibility of every pixel's visible point, in [0, 1],
 // and its work counters. Techniques read the eye buffers and never write them.
-#include <cstdint>
+//
+// A technique is one folder under src/shadows/ and one entry in the technique table
+// (technique_table.cpp): a TechniqueInfo with its name, what it claims (hard or soft, exact or
+// approximate, its error bound against the oracle), its own options struct with defaults and
+// the option specs that read and print it (technique_options.h), and a factory that prepares
+// per-scene state once (the oracle's BVH) and returns an object that renders one light at a
+// time. The kind of technique is decided once, when it is prepared.
+#include <any>
+#include <functional>
+#include <memory>
 #include <string>
+#include <typeinfo>
+#include <utility>
 #include <vector>
 
+#include "core/error.h"
 #include "core/image.h"
 #include "core/stats.h"
 #include "core/view.h"
 #include "raster/depth_buffer.h"
 #include "scene/scene.h"
+#include "shadows/technique_options.h"
 
 namespace penumbra {
 
-enum class TechniqueKind {
-  Reference,      // ray-traced oracle (Embree): hard = one ray to the centre, soft = N rays
-  ShadowVolume,   // hard shadow volumes, z-pass / z-fail, integer stencil
-  Wedge2002,      // penumbra wedges as in the 2002 paper: entry/exit points per fragment
-  WedgeThreePass, // 2004 restructured algorithm, three-pass implementation (section 6.1)
-  WedgeSinglePass,// 2004 restructured algorithm, single-pass implementation (section 6.2)
-};
-
-// Tile z-min/z-max occlusion culling of the wedge passes (2004 paper, section 4).
-enum class CullMode {
-  None,  // every covered pixel reads its depth
-  ZMax,  // only the test that common hardware has: skip tiles whose farthest depth is nearer
-         // than the primitive (for the penumbra: than the whole wedge)
-  Full,  // z-min and z-max: also skip tiles entirely in front of the wedge, and tiles whose
-         // screen-space box lies outside a wedge plane (n- and p-vertex tests, Figure 7)
-};
-
-// How shadow volumes count: from the eye (z-pass, Heidmann) or from infinity (z-fail,
-// Everitt & Kilgard). Auto picks z-fail per caster only where the eye may be inside its volume.
-enum class VolumeMode { Auto, ZPass, ZFail };
-
-struct TechniqueOptions {
-  TechniqueKind kind = TechniqueKind::ShadowVolume;
-  VolumeMode volume_mode = VolumeMode::Auto;
-  // Oracle: rays per pixel over the spherical light (1..4096); with a point light (radius 0),
-  // or when `hard` is set, one ray to the light centre.
-  int rays = 256;
-  bool hard = false;
-  uint64_t seed = 1;
-  bool simd = true;           // false: run every hot loop's scalar twin
-  // Penumbra wedges.
-  CullMode cull = CullMode::Full;
-  // Culling tiles of 2^tile_level pixels, 1..8. 16 x 16 by default: the fastest frame of
-  // `penumbra bench` on fractal and year2002 and within 5 % of it on columns (32 x 32 there), for
-  // both implementations (the paper's optimum is 8 x 8 to 32 x 32, section 7;
-  // docs/reproducing-2004.md).
-  int tile_level = 4;
-  // Culling tiles of the three-pass implementation's umbra pass, a stencil shadow volume pass
-  // (section 6.1; the paper drew it on the GPU, culled by the hardware's own tiles): 2^5 =
-  // 32 x 32, the bin tiles. Its polygons are few, long and mostly inside their tiles, and
-  // smaller tiles cost more in tile tests and kernel calls than they save in pixels (columns
-  // three-pass umbra pass, 16 x 16: 640x427 1.98 ms, 1920x1080 7.3 ms; 32 x 32: 1.73 / 6.1 ms,
-  // medians of 3). 0: the same tiles as the penumbra pass (tile_level), as `bench` sweeps them.
-  int umbra_tile_level = 5;
-  // Umbra polygons (hard shadow volumes; the wedges' front planes with full culling) that cover
-  // a whole culling tile and pass its depth test everywhere add to one coarse value per tile,
-  // not to each pixel: the two-level stencil of Aila's 2005 thesis (section 4.3). The buffers
-  // end the same bit for bit; false gives the 2004 paper's passes (its evaluation, `bench`).
-  bool two_level_stencil = true;
-  bool smooth_falloff = false;  // s' = 3 s^2 - 2 s^3 (2002 paper, section 4.2)
-  bool acute_wedges = false;    // extra wedges around acute silhouette vertices (Figure 7)
-  int light_count = 1;          // LI units per light are 255 / light_count (2002 paper, section 7)
-  bool show_progress = false; // progress bar on a terminal for long work
+// Frame-level knobs every technique obeys; they are not technique options.
+struct RenderContext {
+  int threads = 0;             // worker threads, 0: all cores (applied by the frame)
+  bool simd = true;            // false: every hot loop runs its scalar twin
+  bool show_progress = false;  // progress bar on a terminal for long work
 };
 
 struct TechniqueResult {
@@ -74,15 +39,103 @@ struct TechniqueResult {
   Stats stats;
 };
 
-TechniqueResult renderShadows(const TechniqueOptions& options, const Scene& scene,
-                              const Light& light, const View& view, const EyeBuffers& eye);
+// A technique prepared for one scene. The scene must outlive it and stay unchanged.
+class PreparedTechnique {
+ public:
+  virtual ~PreparedTechnique() = default;
+  virtual TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
+                                 const RenderContext& context) const = 0;
+};
 
-// Name <-> kind, for the CLI and stats files ("reference", "volume", "wedge-2002",
-// "wedge-3pass", "wedge-1pass").
-std::string techniqueName(TechniqueKind kind);
-TechniqueKind parseTechniqueName(const std::string& name);  // throws penumbra::Error
+// What a technique claims, which the conformance suite (tests/test_technique_conformance.cpp)
+// holds it to.
+struct TechniqueTraits {
+  bool soft = false;  // penumbrae from the light's radius; radius 0 must give the hard volume
+  bool ray_traced = false;  // visibility from rays: radius 0 gives the hard oracle instead
+  bool exact = false;  // the oracle's answer on every pixel that is not a tie
+  // Error against the oracle (1024 rays, or one ray to the centre for hard techniques) on the
+  // built-in scenes at the conformance suite's size, with default options: the mean absolute
+  // visibility error over pixels showing geometry, and over penumbra pixels (0 < oracle < 1).
+  double covered_mae_bound = 1.0;
+  double penumbra_mae_bound = 1.0;
+};
+
+struct TechniqueInfo {
+  std::string name;                  // what --technique takes
+  std::vector<std::string> aliases;  // other names it answers to
+  std::string summary;               // one line for `penumbra techniques`
+  TechniqueTraits traits;
+  TechniqueOptionTable options;      // its options struct: defaults, specs, checks, description
+  // Prepares the technique for `scene` with `options` (an object of options.type(), checked).
+  std::function<std::unique_ptr<PreparedTechnique>(const std::any& options, const Scene& scene)>
+      prepare;
+};
+
+// Registered techniques, the table's first (technique_table.cpp), then any registered later.
+const std::vector<TechniqueInfo>& techniques();
 std::vector<std::string> techniqueNames();
-std::string cullModeName(CullMode mode);
-CullMode parseCullMode(const std::string& name);  // "none", "zmax", "full"; throws
+// The technique called `name` (or one of its aliases); throws penumbra::Error naming the known.
+const TechniqueInfo& findTechnique(const std::string& name);
+// Adds a technique; for tests and programs that bring their own. Call it before any frame is
+// rendered (static initialisation is fine); throws when the name is taken.
+void registerTechnique(TechniqueInfo info);
+inline constexpr const char* kDefaultTechnique = "wedge-3pass";
+
+// A technique and its options: what a frame is told to render with.
+class TechniqueConfig {
+ public:
+  TechniqueConfig() : TechniqueConfig(kDefaultTechnique) {}
+  explicit TechniqueConfig(const std::string& name);  // default options; throws if unknown
+  // The technique with options given as its own struct: throws if they are not its type.
+  template <class Options>
+  TechniqueConfig(const std::string& name, Options options) : TechniqueConfig(name) {
+    PENUMBRA_CHECK(options_.type() == typeid(Options), "technique '{}' does not take {}",
+                   info_->name, typeid(Options).name());
+    options_ = std::move(options);
+  }
+
+  const TechniqueInfo& info() const { return *info_; }
+  const std::string& name() const { return info_->name; }
+  // Typed access to the options; throws penumbra::Error when Options is not the technique's.
+  template <class Options>
+  Options& options() {
+    return *checkedCast<Options>(options_);
+  }
+  template <class Options>
+  const Options& options() const {
+    return *checkedCast<const Options>(options_);
+  }
+  const std::any& rawOptions() const { return options_; }
+  // One option by its flag name (without dashes), value as on the command line; throws
+  // penumbra::Error naming the technique, the option and what is wrong.
+  void set(const std::string& option, const std::string& value);
+  std::string get(const std::string& option) const;
+  // Throws penumbra::Error when the options are inconsistent or out of range.
+  void validate() const { info_->options.validate(options_); }
+  // "wedge-3pass (auto, cull full, 16x16 tiles)": for summaries and stats files.
+  std::string describe() const;
+
+ private:
+  template <class Options, class Any>
+  Options* checkedCast(Any& any) const {
+    auto* p = std::any_cast<Options>(&any);
+    PENUMBRA_CHECK(p != nullptr, "technique '{}' options are not {}", info_->name,
+                   typeid(Options).name());
+    return p;
+  }
+
+  const TechniqueInfo* info_;
+  std::any options_;
+};
+
+// Prepares `config` for `scene` (per-scene state) after validating its options.
+std::unique_ptr<PreparedTechnique> prepareTechnique(const TechniqueConfig& config,
+                                                    const Scene& scene);
+
+// One light's visibility with a technique prepared on the spot: for tests and one-off use
+// (frames prepare once and render every light: render/frame.h).
+TechniqueResult renderShadows(const TechniqueConfig& config, const Scene& scene,
+                              const Light& light, const View& view, const EyeBuffers& eye,
+                              const RenderContext& context = {});
 
 }  // namespace penumbra

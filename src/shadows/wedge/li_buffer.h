@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "core/image.h"
-#include "shadows/technique.h"
+#include "core/stats.h"
 
 namespace penumbra {
 
@@ -30,15 +30,13 @@ inline float liVisibility(int16_t li, int full, bool hard) {
   return float(li < 0 ? 0 : (li > full ? full : li)) / float(full);
 }
 
-// The wedge passes of a wedge technique (wedge_technique.cpp) up to the LI buffer, before it is
+// The wedge passes of a wedge technique (wedge_technique.h) up to the LI buffer, before it is
 // clamped into visibility: implementations are compared on it (the three-pass and single-pass
 // buffers are equal value for value, values outside [0, full] included).
 struct WedgeLi {
   LiBuffer li;
-  int full = kLiFull;  // LI of a fully visible light: 255 / TechniqueOptions::light_count
+  int full = kLiFull;  // LI of a fully visible light
   Stats stats;
 };
-WedgeLi renderWedgeLi(const TechniqueOptions& options, const Scene& scene, const Light& light,
-                      const View& view, const EyeBuffers& eye);
 
 }  // namespace penumbra

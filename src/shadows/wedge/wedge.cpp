@@ -81,10 +81,7 @@ struct WedgeEnd {
 }  // namespace
 
 WedgeSet buildWedges(const Mesh& mesh, const Silhouette& silhouette, const Light& light,
-                     const WedgeOptions& options) {
-  PENUMBRA_CHECK(!options.acute_vertex_wedges,
-                 "penumbra wedges: acute_vertex_wedges (2002 paper, Figure 7) is not implemented "
-                 "yet");
+                     const WedgeBuildOptions& options) {
   PENUMBRA_CHECK(isFinite(light.center) && std::isfinite(light.radius) && light.radius >= 0.0f,
                  "penumbra wedges: the light needs a finite centre and a finite radius >= 0 "
                  "(radius {})",

@@ -110,11 +110,10 @@ struct UmbraQuad {
   bool has_wedge = true;
 };
 
-struct WedgeOptions {
-  // Extra wedges around silhouette vertices whose adjacent edges meet at an acute angle
-  // (section 4.1, Figure 7). Off by default, as in the paper's main results. Not implemented
-  // yet: buildWedges throws penumbra::Error when it is set, rather than ignore it.
-  bool acute_vertex_wedges = false;
+// The 2002 paper's optional extra wedges around acute silhouette vertices (section 4.1,
+// Figure 7) are not built: each acute corner gets a gap wedge instead (wedge_gap.h), and the
+// README's "Differences from the papers" says why the fans were measured and left out.
+struct WedgeBuildOptions {
   // Edges within this angle (degrees, in [0, 90)) of the direction to the light at either end
   // are "nearly parallel" (section 8): they get no penumbra wedge and their neighbours are
   // reconnected (wedge.cpp). Edges through the light centre are always treated so.
@@ -143,10 +142,10 @@ struct WedgeSet {
 };
 
 // Throws penumbra::Error for a light with a negative or non-finite radius or centre, a
-// parallel_degrees outside [0, 90), acute_vertex_wedges (not implemented), or a silhouette
+// parallel_degrees outside [0, 90), or a silhouette
 // vertex out of range or not finite.
 WedgeSet buildWedges(const Mesh& mesh, const Silhouette& silhouette, const Light& light,
-                     const WedgeOptions& options = {});
+                     const WedgeBuildOptions& options = {});
 
 enum class Falloff {
   Linear,  // equations (2)-(3)

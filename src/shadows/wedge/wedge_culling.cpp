@@ -4,9 +4,25 @@
 #include <cfloat>
 #include <cmath>
 
+#include "core/error.h"
 #include "raster/depth_buffer.h"
 
 namespace penumbra {
+
+std::string cullModeName(CullMode mode) {
+  switch (mode) {
+    case CullMode::None: return "none";
+    case CullMode::ZMax: return "zmax";
+    case CullMode::Full: return "full";
+  }
+  return "unknown";
+}
+
+CullMode parseCullMode(const std::string& name) {
+  for (CullMode m : {CullMode::None, CullMode::ZMax, CullMode::Full})
+    if (cullModeName(m) == name) return m;
+  throw Error(fmt::format("unknown culling mode '{}' (known: none, zmax, full)", name));
+}
 namespace {
 
 // Largest value of the plane over the box [x0, x1] x [y0, y1] x [z0, z1] (pixel centres): at

@@ -3,8 +3,7 @@
 #include <algorithm>
 
 #include "core/parallel.h"
-#include "shadows/silhouette.h"
-#include "shadows/volume/volume_mode.h"
+#include "shadows/caster_volume.h"
 
 namespace penumbra {
 namespace {
@@ -31,8 +30,7 @@ class FrameBuilder {
   FrameBuilder(WedgeFrame& frame, const View& view) : f_(frame), view_(view) {}
 
   uint32_t vertex(const vec4& homogeneous_world) {
-    f_.triangles.clip.push_back(view_.toClip(homogeneous_world));
-    return uint32_t(f_.triangles.clip.size() - 1);
+    return f_.triangles.addVertex(view_.toClip(homogeneous_world));
   }
   void triangle(uint32_t a, uint32_t b, uint32_t c, const WedgeRole& role) {
     f_.roles.push_back(role);
@@ -53,13 +51,6 @@ class FrameBuilder {
 WedgeRole withFace(WedgeRole role, WedgeFace face) {
   role.face = face;
   return role;
-}
-
-Bounds3 inflated(Bounds3 b, float r) {
-  if (b.empty()) return b;
-  b.min -= vec3(r);
-  b.max += vec3(r);
-  return b;
 }
 
 // The wedge polyhedron that the penumbra passes rasterize: the points inside all four planes
@@ -250,11 +241,10 @@ bool frontIsQuad(const WedgeHull& hull) {
 // does not depend on the other meshes, so meshes are prepared in parallel (a scene of many small
 // casters, like columns, has too few wedges per mesh to split one mesh's work).
 struct MeshWedges {
-  Silhouette silhouette;
+  CasterVolume volume;
   WedgeSet ws;
   std::vector<WedgeHull> hulls;      // per wedge of ws.wedges, then ws.gap_wedges
   std::vector<ScreenWedge> screens;  // same order; valid where the hull is
-  bool zfail = false;
 
   size_t wedgeCount() const { return ws.wedges.size() + ws.gap_wedges.size(); }
   // The edge wedges, then the gap wedges at split vertices (wedge_gap.h). A gap wedge's front
@@ -266,8 +256,8 @@ struct MeshWedges {
   }
 };
 
-MeshWedges prepareMesh(const TechniqueOptions& options, const Scene& scene, size_t m,
-                       const Light& light, const View& view,
+MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, size_t m,
+                       const Light& light, const View& view, const EyeBuffers& eye,
                        const ScreenProjection& projection) {
   const Mesh& mesh = scene.meshes[m];
   const bool soft = light.radius > 0.0f;
@@ -278,19 +268,12 @@ MeshWedges prepareMesh(const TechniqueOptions& options, const Scene& scene, size
   // and the inner half of the penumbra clamps to black (the overlap the 2002 paper names as a
   // limitation, section 8; stanford-bunny's penumbra error against the oracle was 0.30). With
   // a zero radius there is no penumbra, and the umbra must be the hard shadow volume bit for
-  // bit (wedge_frame.h), so the hard volume's casters are kept.
-  p.silhouette = findSilhouette(mesh, scene.adjacency[m], light.center,
-                                soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto);
-  WedgeOptions wedge_options;
-  wedge_options.acute_vertex_wedges = options.acute_wedges;
-  p.ws = buildWedges(mesh, p.silhouette, light, wedge_options);
-  // The soft volume lies within distance r of the hard volume from the centre, so inflating
-  // the caster's box by r keeps the near-plane test conservative (volume_mode.h). The 2002
-  // algorithm predates z-fail for wedges (its section 8) and always counts from the eye.
-  p.zfail = options.kind != TechniqueKind::Wedge2002 &&
-            (options.volume_mode == VolumeMode::ZFail ||
-             (options.volume_mode == VolumeMode::Auto &&
-              mayContainNearPlane(view, light.center, inflated(mesh.bounds(), light.radius))));
+  // bit (wedge_frame.h), so the hard volume's casters are kept. The soft volume lies within
+  // distance r of the hard volume from the centre, so growing the caster's box by r keeps the
+  // near-plane test conservative (caster_volume.h).
+  p.volume = casterVolume(scene, m, eye, light.center, view, options.volume_mode,
+                          soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto, light.radius);
+  p.ws = buildWedges(mesh, p.volume.silhouette, light);
   const size_t n_wedges = p.wedgeCount();
   p.hulls.resize(n_wedges);
   p.screens.resize(n_wedges);
@@ -316,39 +299,30 @@ MeshWedges prepareMesh(const TechniqueOptions& options, const Scene& scene, size
 
 }  // namespace
 
-WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
-                           const Light& light, const View& view) {
+WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
+                           const Light& light, const View& view, const EyeBuffers& eye) {
   WedgeFrame f;
+  f.triangles = ClipTriangles(eye.clip_vertices);
   FrameBuilder out(f, view);
   const bool soft = light.radius > 0.0f;
   const ScreenProjection projection = screenProjection(view);
   std::vector<MeshWedges> prepared(scene.meshes.size());
   parallelFor(scene.meshes.size(), [&](size_t m) {
-    prepared[m] = prepareMesh(options, scene, m, light, view, projection);
+    prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);
   });
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
-    const MeshWedges& p = prepared[m];
-    const Silhouette& silhouette = p.silhouette;
+    MeshWedges& p = prepared[m];
     const WedgeSet& ws = p.ws;
     const std::vector<WedgeHull>& hulls = p.hulls;
-    const bool zfail = p.zfail;
-    f.silhouette_edges += silhouette.edges.size();
+    const bool zfail = p.volume.zfail;
+    f.silhouette_edges += p.volume.silhouette.edges.size();
     f.junction_vertices += ws.junction_vertices;
 
-    const size_t n = mesh.positions.size();
-    const uint32_t base = uint32_t(f.triangles.clip.size());
-    f.triangles.clip.resize(base + 2 * n);
-    parallelFor((n + 4095) / 4096, [&](size_t chunk) {
-      for (size_t i = chunk * 4096; i < std::min(n, (chunk + 1) * 4096); ++i) {
-        // The same transforms as the eye pass and the hard shadow volume (volume_geometry.cpp):
-        // caps and the zero-radius umbra must land on bit-identical clip coordinates.
-        f.triangles.clip[base + i] = view.toClip(vec4(mesh.positions[i], 1.0f));
-        f.triangles.clip[base + n + i] = view.toClip(vec4(mesh.positions[i] - light.center, 0.0f));
-      }
-    });
+    appendExtrudedVertices(mesh, light.center, view, p.volume, f.triangles);
+    const uint32_t base = p.volume.finite, infinite = p.volume.infinite;
     auto finite = [&](uint32_t v) { return base + v; };
-    auto hard_infinity = [&](uint32_t v) { return uint32_t(base + n + v); };
+    auto hard_infinity = [&](uint32_t v) { return infinite + v; };
 
     const size_t n_wedges = p.wedgeCount();
     // Which umbra quads are also the front face of a wedge: the unit edge's quad, when the
@@ -402,17 +376,13 @@ WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
       }
     }
     if (zfail) {
-      for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const int8_t o = silhouette.orientation[t];
-        if (o == 0) continue;
-        const uint32_t a = mesh.indices[t * 3], b = mesh.indices[t * 3 + 1], c = mesh.indices[t * 3 + 2];
+      // Light caps (the casters themselves) and dark caps at infinity (caster_volume.h).
+      forEachCap(mesh, p.volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
         WedgeRole cap;
-        cap.umbra_weight = o;  // light cap: the caster itself, in its own vertex order
+        cap.umbra_weight = weight;
         cap.zfail = true;
-        out.triangle(finite(a), finite(b), finite(c), cap);
-        cap.umbra_weight = -o;  // dark cap at infinity, facing away
-        out.triangle(hard_infinity(a), hard_infinity(b), hard_infinity(c), cap);
-      }
+        out.triangle(a, b, c, cap);
+      });
     }
 
     // The other faces of every wedge polyhedron (the penumbra footprint). Its corners on the

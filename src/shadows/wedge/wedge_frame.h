@@ -7,8 +7,9 @@
 
 #include "core/view.h"
 #include "raster/triangle_setup.h"
+#include "raster/depth_buffer.h"
 #include "scene/scene.h"
-#include "shadows/technique.h"
+#include "shadows/caster_volume.h"
 #include "shadows/wedge/wedge.h"
 #include "shadows/wedge/wedge_screen.h"
 
@@ -34,7 +35,9 @@ struct WedgeRole {
 enum WedgeFace : int8_t { kFront = 0, kBack = 1, kLeft = 2, kRight = 3, kFar = 4 };
 
 struct WedgeFrame {
-  ClipTriangles triangles;         // payload: index into roles
+  // Payload: index into roles. Finite caster vertices are the eye pass's (borrowed from the
+  // EyeBuffers the frame was built with, which must outlive it).
+  ClipTriangles triangles;
   std::vector<WedgeRole> roles;
   std::vector<Wedge> wedges;       // all meshes' wedges; WedgeRole::wedge indexes these
   std::vector<ScreenWedge> screen; // same order
@@ -48,7 +51,11 @@ struct WedgeFrame {
 // Builds the frame for `light`. With a zero radius there are no wedge faces and the umbra
 // volume is the hard shadow volume exactly (same clip vertices, same triangles), so every wedge
 // variant then gives the hard-shadow image (resolved by the hard rule, li_buffer.h).
-WedgeFrame buildWedgeFrame(const TechniqueOptions& options, const Scene& scene,
-                           const Light& light, const View& view);
+struct WedgeFrameOptions {
+  VolumeMode volume_mode = VolumeMode::Auto;  // ZPass for the 2002 algorithm
+  bool smooth_falloff = false;
+};
+WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
+                           const Light& light, const View& view, const EyeBuffers& eye);
 
 }  // namespace penumbra

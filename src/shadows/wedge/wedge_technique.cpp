@@ -1,6 +1,9 @@
 // Penumbra wedge soft shadows: the 2002 algorithm and the 2004 restructured algorithm in its
 // three-pass and single-pass implementations (2004 paper, sections 3-6).
 //
+// The frame's triangles (wedge_frame.h) are set up once per light; every pass bins the ones it
+// draws from that one setup.
+//
 // Restructured (section 3): rasterizeUmbra(front planes, -255) with the depth test, then
 // rasterizePenumbra(front-facing wedge faces): for each pixel, if the depth-buffer point is
 // inside the wedge, add round(255 s). Back planes are never drawn for the umbra. With z-fail
@@ -13,6 +16,8 @@
 //     does both parts with one depth read and one LI write; its umbra part is culled with the
 //     z-max test only (z-min with z-fail), its penumbra part with the full test.
 #include "shadows/wedge/wedge_technique.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -85,19 +90,21 @@ int32_t umbraValue(const WedgeRole& role, const SetupTriangle& t, int full) {
 
 // Three-pass, pass 1 and 2: the umbra volume into a stencil buffer, then LI = full - full * s.
 // The stencil is read as 8 bits wrapping around, as the papers' hardware stencil.
-void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& options,
+void umbraThroughStencil(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+                         const WedgeOptions& options, const RenderContext& context,
                          const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
-  ClipTriangles umbra;
-  umbra.clip = frame.triangles.clip;
-  for (size_t i = 0; i < frame.roles.size(); ++i) {
-    const WedgeRole& role = frame.roles[i];
-    if (role.umbra_weight == 0) continue;
-    umbra.add(frame.triangles.indices[i * 3], frame.triangles.indices[i * 3 + 1],
-              frame.triangles.indices[i * 3 + 2], role.umbra_weight, role.zfail ? kZFail : 0);
+  // The umbra volume's triangles with their stencil weights as payload (rasterizer.h); the
+  // frame's setup already carries the z-fail flag.
+  std::vector<SetupTriangle> umbra;
+  for (const SetupTriangle& t : setup) {
+    const int32_t weight = frame.roles[size_t(t.payload)].umbra_weight;
+    if (weight == 0) continue;
+    umbra.push_back(t);
+    umbra.back().payload = weight;
   }
   Image<int32_t> stencil(li.width(), li.height(), 0);
   StencilOptions so;
-  so.simd = options.simd;
+  so.simd = context.simd;
   so.tile_culling = options.cull != CullMode::None;
   so.cull_level = options.umbra_tile_level > 0 ? options.umbra_tile_level : options.tile_level;
   so.two_level = options.two_level_stencil && options.cull == CullMode::Full;
@@ -116,8 +123,9 @@ void umbraThroughStencil(const WedgeFrame& frame, const TechniqueOptions& option
 // the LI (wrapping) before it is stored (two-level stencil, raster/tile_offsets.h). Counters
 // are summed in tile order.
 template <class Keep, class Fn>
-void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuffer& li,
-                          Stats& stats, int coarse_level, Keep&& keep, Fn&& fn) {
+void forEachWedgeTriangle(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+                          const EyeBuffers& eye, LiBuffer& li, Stats& stats, int coarse_level,
+                          Keep&& keep, Fn&& fn) {
   const int width = li.width(), height = li.height();
   std::vector<TileWork> work(binTileCount(width, height));
   struct Copies {
@@ -126,9 +134,11 @@ void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuff
     TileCopy<float> depth;
     TileCopy<int16_t> li;
   };
+  std::vector<SetupTriangle> kept;
+  for (const SetupTriangle& t : setup)
+    if (keep(frame.roles[size_t(t.payload)], t)) kept.push_back(t);
   forEachBinTile(
-      frame.triangles, width, height,
-      [&](const SetupTriangle& t) { return keep(frame.roles[size_t(t.payload)], t); },
+      kept, width, height,
       [&](const TileTriangles& tile) {
         const TileBox& box = tile.box();
         std::optional<Copies> copies;
@@ -151,16 +161,16 @@ void forEachWedgeTriangle(const WedgeFrame& frame, const EyeBuffers& eye, LiBuff
               tw.umbra.writes, tw.accepted);
         }
         if (copies) copies->li.storeTo(li, box);
-      },
-      stats);
+      });
   addTileWork(work, stats);
 }
 
-void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
+void penumbraPass(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+                  const WedgeOptions& options, const RenderContext& context,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   forEachWedgeTriangle(
-      frame, eye, li, stats, options.tile_level, penumbraFace,
+      frame, setup, eye, li, stats, options.tile_level, penumbraFace,
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         WedgeKernelWork k;
@@ -173,18 +183,19 @@ void penumbraPass(const WedgeFrame& frame, const TechniqueOptions& options,
                                                                                               : 1;
             },
             [&](const TileEdges& rect, int) {
-              wedgeKernel(rect, k, target(), tw.penumbra, options.simd);
+              wedgeKernel(rect, k, target(), tw.penumbra, context.simd);
             },
             tw.tally);
       });
 }
 
-void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const EyeBuffers& eye,
+void singlePass(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+                const WedgeOptions& options, const RenderContext& context, const EyeBuffers& eye,
                 int full, LiBuffer& li, Stats& stats) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   const bool two_level = options.two_level_stencil && options.cull == CullMode::Full;
   forEachWedgeTriangle(
-      frame, eye, li, stats, options.tile_level,
+      frame, setup, eye, li, stats, options.tile_level,
       [](const WedgeRole& role, const SetupTriangle& t) {
         return role.umbra_weight != 0 || penumbraFace(role, t);
       },
@@ -227,20 +238,21 @@ void singlePass(const WedgeFrame& frame, const TechniqueOptions& options, const 
               // One depth read per pixel for both parts: count it under the penumbra when
               // that part runs, else under the umbra.
               wedgeKernel(rect, k, target(), k.wedge != nullptr ? tw.penumbra : tw.umbra,
-                          options.simd);
+                          context.simd);
             },
             tw.tally, kUmbraWhole);
       });
 }
 
-void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
+void original2002(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+                  const WedgeOptions& options, const RenderContext& context,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   // Entries (front-facing wedge faces) and umbra quads; back-facing wedge faces add nothing.
   const auto entry = [](const WedgeRole& role, const SetupTriangle& t) {
     return role.wedge != kNoWedge && t.facing * role.face_sign > 0;
   };
   forEachWedgeTriangle(
-      frame, eye, li, stats, options.tile_level,
+      frame, setup, eye, li, stats, options.tile_level,
       [&](const WedgeRole& role, const SetupTriangle& t) {
         return entry(role, t) || role.umbra_weight != 0;
       },
@@ -258,7 +270,7 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
           WedgeKernelWork k;
           k.umbra_value = umbraValue(role, t, full);
           k.rule = DepthRule::Closer;
-          wedgeKernel(e, k, target(), tw.umbra, options.simd);
+          wedgeKernel(e, k, target(), tw.umbra, context.simd);
           return;
         }
         wedge2002Kernel(e, frame.screen[size_t(role.wedge)], role.face, float(full), target(),
@@ -268,74 +280,181 @@ void original2002(const WedgeFrame& frame, const TechniqueOptions& options,
 
 }  // namespace
 
-WedgeLi renderWedgeLi(const TechniqueOptions& options, const Scene& scene, const Light& light,
-                      const View& view, const EyeBuffers& eye) {
-  PENUMBRA_CHECK(options.tile_level >= kMinTileLevel && options.tile_level <= kMaxTileLevel,
-                 "tile size 2^{} is outside 2^{}..2^{}", options.tile_level, kMinTileLevel,
-                 kMaxTileLevel);
-  PENUMBRA_CHECK(options.umbra_tile_level == 0 || (options.umbra_tile_level >= kMinTileLevel &&
-                                                    options.umbra_tile_level <= kMaxTileLevel),
-                 "umbra tile size 2^{} is outside 2^{}..2^{}", options.umbra_tile_level,
-                 kMinTileLevel, kMaxTileLevel);
-  PENUMBRA_CHECK(options.light_count >= 1 && options.light_count <= 255,
-                 "light count {} is outside 1..255", options.light_count);
+std::string wedgeTechniqueName(WedgeAlgorithm algorithm) {
+  switch (algorithm) {
+    case WedgeAlgorithm::Original2002: return "wedge-2002";
+    case WedgeAlgorithm::ThreePass: return "wedge-3pass";
+    case WedgeAlgorithm::SinglePass: return "wedge-1pass";
+  }
+  return "unknown";
+}
+
+WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene,
+                      const Light& light, const View& view, const EyeBuffers& eye,
+                      const RenderContext& context) {
   WedgeLi result;
   Stats& stats = result.stats;
-  // 255 per light, 255 / n with n lights sharing one buffer (2002 paper, section 7).
-  const int full = kLiFull / options.light_count;
+  const int full = kLiFull;
   result.full = full;
   WedgeFrame frame;
+  std::vector<SetupTriangle> setup;
   {
     PassTimer timer(stats, "wedges");
-    frame = buildWedgeFrame(options, scene, light, view);
+    WedgeFrameOptions frame_options;
+    // The 2002 algorithm predates z-fail for wedges (its section 8): always from the eye.
+    frame_options.volume_mode =
+        algorithm == WedgeAlgorithm::Original2002 ? VolumeMode::ZPass : options.volume_mode;
+    frame_options.smooth_falloff = options.smooth_falloff;
+    frame = buildWedgeFrame(frame_options, scene, light, view, eye);
     stats.silhouette_edges += frame.silhouette_edges;
     stats.wedges += frame.wedges.size();
   }
+  {
+    PassTimer timer(stats, "setup");
+    setup = setupTriangles(frame.triangles, view.width, view.height);
+    stats.triangles += setup.size();
+  }
   LiBuffer& li = result.li;
   li.resize(view.width, view.height, int16_t(full));
-  switch (options.kind) {
-    case TechniqueKind::WedgeThreePass: {
+  switch (algorithm) {
+    case WedgeAlgorithm::ThreePass: {
       {
         PassTimer timer(stats, "umbra");
-        umbraThroughStencil(frame, options, eye, full, li, stats);
+        umbraThroughStencil(frame, setup, options, context, eye, full, li, stats);
       }
       PassTimer timer(stats, "penumbra");
-      penumbraPass(frame, options, eye, full, li, stats);
+      penumbraPass(frame, setup, options, context, eye, full, li, stats);
       break;
     }
-    case TechniqueKind::WedgeSinglePass: {
+    case WedgeAlgorithm::SinglePass: {
       PassTimer timer(stats, "single-pass");
-      singlePass(frame, options, eye, full, li, stats);
+      singlePass(frame, setup, options, context, eye, full, li, stats);
       break;
     }
-    case TechniqueKind::Wedge2002: {
+    case WedgeAlgorithm::Original2002: {
       PassTimer timer(stats, "wedge-2002");
-      original2002(frame, options, eye, full, li, stats);
+      original2002(frame, setup, options, context, eye, full, li, stats);
       break;
     }
-    default:
-      throw Error("renderWedges: not a wedge technique");
   }
   return result;
 }
 
-TechniqueResult renderWedges(const TechniqueOptions& options, const Scene& scene,
-                             const Light& light, const View& view, const EyeBuffers& eye) {
-  WedgeLi wedges = renderWedgeLi(options, scene, light, view, eye);
-  TechniqueResult result;
-  result.stats = std::move(wedges.stats);
-  {
+namespace {
+
+class PenumbraWedges final : public PreparedTechnique {
+ public:
+  PenumbraWedges(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene)
+      : algorithm_(algorithm), options_(options), scene_(scene) {}
+
+  TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
+                         const RenderContext& context) const override {
+    WedgeLi wedges = renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context);
+    TechniqueResult result;
+    result.stats = std::move(wedges.stats);
     PassTimer timer(result.stats, "resolve");
-    // As the hard shadow volume (shadow_volume.cpp) and the oracle: a point whose triangle
-    // faces away from the whole light gets none of it, whatever the wedges near the terminator
-    // say (their silhouette is the centre's for the whole light, 2002 paper, section 8). With a
-    // zero radius this keeps the image the hard volume's exactly.
+    // As the hard shadow volume and the oracle: a point whose triangle faces away from the
+    // whole light gets none of it, whatever the wedges near the terminator say (their
+    // silhouette is the centre's for the whole light, 2002 paper, section 8). With a zero
+    // radius this keeps the image the hard volume's exactly.
     const bool hard = !(light.radius > 0.0f);
-    resolveVisibility(scene, light, view, eye, result.visibility, [&](int x, int y) {
+    resolveVisibility(scene_, light, view, eye, result.visibility, [&](int x, int y) {
       return liVisibility(wedges.li.at(x, y), wedges.full, hard);
     });
+    return result;
   }
-  return result;
+
+ private:
+  WedgeAlgorithm algorithm_;
+  WedgeOptions options_;
+  const Scene& scene_;
+};
+
+// Culling tiles are 2^level pixels wide; the options speak of the size in pixels.
+int tileLevelOfSize(int64_t size, const std::string& what) {
+  for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level)
+    if (size == int64_t(1) << level) return level;
+  throw Error(fmt::format("{} {} is not a power of two in {}..{}", what, size, 1 << kMinTileLevel,
+                          1 << kMaxTileLevel));
+}
+
+}  // namespace
+
+TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm) {
+  TechniqueInfo info;
+  info.name = wedgeTechniqueName(algorithm);
+  info.traits.soft = true;
+  // The papers' approximation (silhouettes from the light centre, overlapping wedges added):
+  // the bounds of the oracle tests on the built-in scenes (docs/wedge-accuracy.md).
+  info.traits.covered_mae_bound = 0.03;
+  info.traits.penumbra_mae_bound = 0.10;
+  OptionTableBuilder<WedgeOptions> options;
+  options.flag("smooth", "smooth falloff s' = 3s^2 - 2s^3 (2002 paper, section 4.2)",
+               &WedgeOptions::smooth_falloff);
+  if (algorithm == WedgeAlgorithm::Original2002) {
+    info.summary = "penumbra wedges as in the 2002 paper: z-pass, entry and exit per pixel, "
+                   "no culling";
+    options.describe([](const WedgeOptions& o) {
+      return std::string("zpass") + (o.smooth_falloff ? ", smooth" : "");
+    });
+  } else {
+    info.summary = algorithm == WedgeAlgorithm::ThreePass
+                       ? "penumbra wedges, 2004 restructured algorithm, three passes (umbra "
+                         "stencil, then penumbra), tile culling, z-fail"
+                       : "penumbra wedges, 2004 restructured algorithm, one pass over umbra and "
+                         "penumbra, tile culling, z-fail";
+    options
+        .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
+                &WedgeOptions::volume_mode,
+                {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
+                 {"zfail", VolumeMode::ZFail}})
+        .choice("cull", "tile culling: none, zmax (z-max only) or full (z-min and z-max)",
+                &WedgeOptions::cull,
+                {{"none", CullMode::None}, {"zmax", CullMode::ZMax}, {"full", CullMode::Full}})
+        .integer(
+            "tile-size", "culling tile size in pixels, a power of two in 2..256",
+            1 << kMinTileLevel, 1 << kMaxTileLevel,
+            [](WedgeOptions& o, int64_t size) { o.tile_level = tileLevelOfSize(size, "--tile-size"); },
+            [](const WedgeOptions& o) { return int64_t(1) << o.tile_level; })
+        .flag("one-level-stencil",
+              "umbra pixel by pixel, as the papers' passes (otherwise tiles an umbra polygon "
+              "covers and passes whole take one coarse write)",
+              &WedgeOptions::two_level_stencil, false);
+    if (algorithm == WedgeAlgorithm::ThreePass) {
+      options.integer(
+          "umbra-tile-size",
+          "culling tile size of the umbra pass, a power of two in 2..256; 0: --tile-size",
+          0, 1 << kMaxTileLevel,
+          [](WedgeOptions& o, int64_t size) {
+            o.umbra_tile_level = size == 0 ? 0 : tileLevelOfSize(size, "--umbra-tile-size");
+          },
+          [](const WedgeOptions& o) {
+            return o.umbra_tile_level == 0 ? int64_t(0) : int64_t(1) << o.umbra_tile_level;
+          });
+    }
+    options.describe([](const WedgeOptions& o) {
+      const char* stencil =
+          o.two_level_stencil || o.cull != CullMode::Full ? "" : ", one-level stencil";
+      return fmt::format("{}, cull {}, {}x{} tiles{}{}", volumeModeName(o.volume_mode),
+                         cullModeName(o.cull), 1 << o.tile_level, 1 << o.tile_level, stencil,
+                         o.smooth_falloff ? ", smooth" : "");
+    });
+  }
+  options.check([](const WedgeOptions& o) {
+    PENUMBRA_CHECK(o.tile_level >= kMinTileLevel && o.tile_level <= kMaxTileLevel,
+                   "tile size 2^{} is outside 2^{}..2^{}", o.tile_level, kMinTileLevel,
+                   kMaxTileLevel);
+    PENUMBRA_CHECK(o.umbra_tile_level == 0 || (o.umbra_tile_level >= kMinTileLevel &&
+                                               o.umbra_tile_level <= kMaxTileLevel),
+                   "umbra tile size 2^{} is outside 2^{}..2^{}", o.umbra_tile_level,
+                   kMinTileLevel, kMaxTileLevel);
+  });
+  info.options = options.build();
+  info.prepare = [algorithm](const std::any& options, const Scene& scene) {
+    return std::make_unique<PenumbraWedges>(algorithm,
+                                            std::any_cast<const WedgeOptions&>(options), scene);
+  };
+  return info;
 }
 
 }  // namespace penumbra

@@ -1,6 +1,10 @@
-#include "shadows/volume/volume_mode.h"
+#include "shadows/caster_volume.h"
 
+#include <algorithm>
 #include <array>
+
+#include "core/error.h"
+#include "core/parallel.h"
 
 namespace penumbra {
 namespace {
@@ -13,7 +17,23 @@ double minDistance(const dvec3& n, double d, const Bounds3& box) {
   return glm::dot(n, near_corner) + d;
 }
 
+Bounds3 inflated(Bounds3 b, float r) {
+  if (b.empty() || !(r > 0.0f)) return b;
+  b.min -= vec3(r);
+  b.max += vec3(r);
+  return b;
+}
+
 }  // namespace
+
+std::string volumeModeName(VolumeMode mode) {
+  switch (mode) {
+    case VolumeMode::Auto: return "auto";
+    case VolumeMode::ZPass: return "zpass";
+    case VolumeMode::ZFail: return "zfail";
+  }
+  return "unknown";
+}
 
 bool mayContainNearPlane(const View& view, const vec3& light, const Bounds3& caster) {
   if (caster.empty()) return false;
@@ -56,6 +76,33 @@ bool mayContainNearPlane(const View& view, const vec3& light, const Bounds3& cas
   for (int i = 0; i < 4; ++i)
     if (separates(hull[4], hull[i], hull[(i + 1) % 4])) return false;
   return true;
+}
+
+CasterVolume casterVolume(const Scene& scene, size_t m, const EyeBuffers& eye, const vec3& centre,
+                          const View& view, VolumeMode mode, CasterPolicy policy, float margin) {
+  PENUMBRA_CHECK(eye.mesh_vertex_base.size() == scene.meshes.size(),
+                 "the eye buffers hold the vertices of {} meshes but the scene has {}",
+                 eye.mesh_vertex_base.size(), scene.meshes.size());
+  const Mesh& mesh = scene.meshes[m];
+  CasterVolume v;
+  v.silhouette = findSilhouette(mesh, scene.adjacency[m], centre, policy);
+  v.zfail = mode == VolumeMode::ZFail ||
+            (mode == VolumeMode::Auto &&
+             mayContainNearPlane(view, centre, inflated(mesh.bounds(), margin)));
+  v.finite = eye.mesh_vertex_base[m];
+  return v;
+}
+
+void appendExtrudedVertices(const Mesh& mesh, const vec3& centre, const View& view,
+                            CasterVolume& volume, ClipTriangles& out) {
+  const size_t n = mesh.positions.size();
+  volume.infinite = out.appendVertices(n);
+  vec4* extruded = out.ownVertex(volume.infinite);
+  parallelFor((n + 4095) / 4096, [&](size_t chunk) {
+    const size_t end = std::min(n, (chunk + 1) * 4096);
+    for (size_t i = chunk * 4096; i < end; ++i)
+      extruded[i] = view.toClip(vec4(mesh.positions[i] - centre, 0.0f));
+  });
 }
 
 }  // namespace penumbra

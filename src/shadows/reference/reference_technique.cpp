@@ -1,9 +1,12 @@
-#include "shadows/reference/reference.h"
+#include "shadows/reference/reference_technique.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -35,12 +38,26 @@ struct RowCounters {
   uint64_t rays = 0;
 };
 
-}  // namespace
+// The scene's BVH is built once, when the technique is prepared for the scene; every light and
+// frame traces against it.
+class Oracle final : public PreparedTechnique {
+ public:
+  Oracle(const ReferenceOptions& options, const Scene& scene)
+      : options_(options), scene_(scene), bvh_(scene) {}
+  TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
+                         const RenderContext& context) const override;
 
-TechniqueResult renderReference(const TechniqueOptions& options, const Scene& scene,
-                                const Light& light, const View& view, const EyeBuffers& eye) {
-  PENUMBRA_CHECK(options.rays >= 1 && options.rays <= kMaxRays,
-                 "reference rays per pixel is {} but must be in 1..{}", options.rays, kMaxRays);
+ private:
+  ReferenceOptions options_;
+  const Scene& scene_;
+  EmbreeScene bvh_;
+};
+
+TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBuffers& eye,
+                               const RenderContext& context) const {
+  const Scene& scene = scene_;
+  const ReferenceOptions& options = options_;
+  const EmbreeScene* bvh = &bvh_;
   PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
   PENUMBRA_CHECK(std::isfinite(light.radius) && light.radius >= 0.0f,
                  "light radius {} must be a finite number >= 0", light.radius);
@@ -66,19 +83,13 @@ TechniqueResult renderReference(const TechniqueOptions& options, const Scene& sc
   result.visibility.resize(width, height, 1.0f);
   Stats& stats = result.stats;
 
-  std::unique_ptr<EmbreeScene> bvh;
-  {
-    PassTimer timer(stats, "reference_bvh");
-    bvh = std::make_unique<EmbreeScene>(scene);
-  }
-
   PassTimer timer(stats, "reference");
   const bool hard = options.hard || light.radius == 0.0f;
   const int n = hard ? 1 : options.rays;
   const dvec3 center(light.center);
   const double radius = light.radius;
   std::vector<RowCounters> row_counters(static_cast<size_t>(height));
-  ProgressBar progress("reference", uint64_t(height), options.show_progress);
+  ProgressBar progress("reference", uint64_t(height), context.show_progress);
 
   // One work item per row: rows never share pixels, each pixel's rays are a function of the
   // pixel alone, and counters are summed in row order, so results do not depend on threads.
@@ -112,7 +123,7 @@ TechniqueResult renderReference(const TechniqueOptions& options, const Scene& sc
         columns.push_back(x);
       }
       blocked.resize(rays.size());
-      bvh->occluded(rays.data(), rays.size(), options.simd, blocked.data());
+      bvh->occluded(rays.data(), rays.size(), context.simd, blocked.data());
       for (size_t i = 0; i < rays.size(); ++i) visibility[columns[i]] = blocked[i] ? 0.0f : 1.0f;
       progress.add();
       return;
@@ -139,7 +150,7 @@ TechniqueResult renderReference(const TechniqueOptions& options, const Scene& sc
         }
         rays[traced++] = makeRay(origin, s.direction, s.distance);
       }
-      bvh->occluded(rays.data(), traced, options.simd, blocked.data());
+      bvh->occluded(rays.data(), traced, context.simd, blocked.data());
       int unblocked = 0;
       for (size_t k = 0; k < traced; ++k) unblocked += blocked[k] ? 0 : 1;
       visibility[x] = float(unblocked) / float(n);
@@ -154,6 +165,36 @@ TechniqueResult renderReference(const TechniqueOptions& options, const Scene& sc
     stats.rays += c.rays;
   }
   return result;
+}
+
+}  // namespace
+
+TechniqueInfo referenceTechnique() {
+  TechniqueInfo info;
+  info.name = "reference";
+  info.aliases = {"oracle"};
+  info.summary = "the ray-traced oracle (Embree): one ray to the light centre, or N stratified "
+                 "rays over the spherical light";
+  info.traits.soft = true;
+  info.traits.ray_traced = true;
+  // Its own sampling noise against 1024 rays, at the default 256 rays.
+  info.traits.covered_mae_bound = 0.01;
+  info.traits.penumbra_mae_bound = 0.03;
+  info.options = OptionTableBuilder<ReferenceOptions>()
+                     .integer("rays", "rays per pixel over the light", &ReferenceOptions::rays,
+                              1, kMaxRays)
+                     .flag("hard", "one ray to the light centre, whatever its radius",
+                           &ReferenceOptions::hard)
+                     .integer("seed", "random seed of the ray directions",
+                              &ReferenceOptions::seed, 0, INT64_MAX)
+                     .describe([](const ReferenceOptions& o) {
+                       return o.hard ? std::string("hard") : fmt::format("{} rays", o.rays);
+                     })
+                     .build();
+  info.prepare = [](const std::any& options, const Scene& scene) {
+    return std::make_unique<Oracle>(std::any_cast<const ReferenceOptions&>(options), scene);
+  };
+  return info;
 }
 
 }  // namespace penumbra

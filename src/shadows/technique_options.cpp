@@ -1,0 +1,64 @@
+#include "shadows/technique_options.h"
+
+#include <cerrno>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+
+namespace penumbra {
+
+std::string OptionSpec::usage() const {
+  switch (kind) {
+    case OptionKind::Flag: return "--" + name;
+    case OptionKind::Integer: return "--" + name + " N";
+    case OptionKind::Choice: return fmt::format("--{} {}", name, fmt::join(choices, "|"));
+  }
+  return "--" + name;
+}
+
+const OptionSpec* TechniqueOptionTable::find(const std::string& name) const {
+  for (const OptionSpec& s : specs_)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+void TechniqueOptionTable::validate(const std::any& options) const {
+  PENUMBRA_CHECK(options.type() == defaults_.type(), "the options given are not this technique's");
+  for (const OptionSpec& s : specs_) {
+    const std::string value = s.get(options);
+    if (s.kind == OptionKind::Integer) parseInteger(value, s.min, s.max, "--" + s.name);
+    PENUMBRA_CHECK(s.kind != OptionKind::Choice || value != "unknown",
+                   "--{} holds a value that is none of {}", s.name, fmt::join(s.choices, ", "));
+  }
+  if (check_) check_(options);
+}
+
+int64_t parseInteger(const std::string& text, int64_t min, int64_t max, const std::string& what) {
+  // strtoll alone accepts leading spaces, a '+' and trailing junk ("64abc"): only digits with an
+  // optional leading '-' are a number here.
+  const size_t digits_from = !text.empty() && text[0] == '-' ? 1 : 0;
+  bool digits = text.size() > digits_from;
+  for (size_t i = digits_from; i < text.size(); ++i)
+    digits = digits && text[i] >= '0' && text[i] <= '9';
+  PENUMBRA_CHECK(digits, "{} takes a whole number, not '{}'", what, text);
+  errno = 0;
+  const long long value = std::strtoll(text.c_str(), nullptr, 10);
+  PENUMBRA_CHECK(errno != ERANGE && value >= min && value <= max,
+                 "{} is {} but must be in {}..{}", what, text, min, max);
+  return int64_t(value);
+}
+
+bool parseFlag(const std::string& text, const std::string& what) {
+  if (text == "true" || text == "on" || text == "1") return true;
+  if (text == "false" || text == "off" || text == "0") return false;
+  throw Error(fmt::format("{} takes true or false, not '{}'", what, text));
+}
+
+void throwUnknownOptionChoice(const std::string& what, const std::string& value,
+                              const std::vector<std::string>& choices) {
+  throw Error(fmt::format("{} takes {}, not '{}'", what, fmt::join(choices, ", "), value));
+}
+
+}  // namespace penumbra

@@ -1,0 +1,21 @@
+// The one place a new technique is listed: its folder provides a TechniqueInfo, this table
+// names it. Order is the order of `penumbra techniques` and of the conformance suite.
+#include "shadows/technique_table.h"
+
+#include "shadows/reference/reference_technique.h"
+#include "shadows/volume/volume_technique.h"
+#include "shadows/wedge/wedge_technique.h"
+
+namespace penumbra {
+
+std::vector<TechniqueInfo> builtinTechniques() {
+  return {
+      volumeTechnique(),
+      wedgeTechnique(WedgeAlgorithm::ThreePass),
+      wedgeTechnique(WedgeAlgorithm::SinglePass),
+      wedgeTechnique(WedgeAlgorithm::Original2002),
+      referenceTechnique(),
+  };
+}
+
+}  // namespace penumbra
