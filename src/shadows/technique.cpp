@@ -1,5 +1,7 @@
 #include "shadows/technique.h"
 
+#include <iterator>
+
 #include <fmt/format.h>
 
 #include "core/error.h"
@@ -9,9 +11,14 @@ namespace penumbra {
 namespace {
 
 // The table's techniques, then the registered ones. Built on first use, so a registration
-// during static initialisation (a test's own technique) finds the table already there.
-std::vector<TechniqueInfo>& registry() {
-  static std::vector<TechniqueInfo> all = builtinTechniques();
+// during static initialisation (a test's own technique) finds the table already there. A deque:
+// configurations point at their TechniqueInfo, which a later registration must not move.
+std::deque<TechniqueInfo>& registry() {
+  static std::deque<TechniqueInfo> all = [] {
+    std::vector<TechniqueInfo> table = builtinTechniques();
+    return std::deque<TechniqueInfo>(std::make_move_iterator(table.begin()),
+                                     std::make_move_iterator(table.end()));
+  }();
   return all;
 }
 
@@ -24,7 +31,7 @@ bool answersTo(const TechniqueInfo& info, const std::string& name) {
 
 }  // namespace
 
-const std::vector<TechniqueInfo>& techniques() { return registry(); }
+const std::deque<TechniqueInfo>& techniques() { return registry(); }
 
 std::vector<std::string> techniqueNames() {
   std::vector<std::string> names;

@@ -10,6 +10,7 @@
 // per-scene state once (the oracle's BVH) and returns an object that renders one light at a
 // time. The kind of technique is decided once, when it is prepared.
 #include <any>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -72,7 +73,8 @@ struct TechniqueInfo {
 };
 
 // Registered techniques, the table's first (technique_table.cpp), then any registered later.
-const std::vector<TechniqueInfo>& techniques();
+// References to them stay valid for the program's life.
+const std::deque<TechniqueInfo>& techniques();
 std::vector<std::string> techniqueNames();
 // The technique called `name` (or one of its aliases); throws penumbra::Error naming the known.
 const TechniqueInfo& findTechnique(const std::string& name);
@@ -89,8 +91,8 @@ class TechniqueConfig {
   // The technique with options given as its own struct: throws if they are not its type.
   template <class Options>
   TechniqueConfig(const std::string& name, Options options) : TechniqueConfig(name) {
-    PENUMBRA_CHECK(options_.type() == typeid(Options), "technique '{}' does not take {}",
-                   info_->name, typeid(Options).name());
+    PENUMBRA_CHECK(options_.type() == typeid(Options),
+                   "technique '{}' takes another options struct than the one given", info_->name);
     options_ = std::move(options);
   }
 
@@ -119,8 +121,8 @@ class TechniqueConfig {
   template <class Options, class Any>
   Options* checkedCast(Any& any) const {
     auto* p = std::any_cast<Options>(&any);
-    PENUMBRA_CHECK(p != nullptr, "technique '{}' options are not {}", info_->name,
-                   typeid(Options).name());
+    PENUMBRA_CHECK(p != nullptr, "technique '{}' has another options struct than the one asked for",
+                   info_->name);
     return p;
   }
 
