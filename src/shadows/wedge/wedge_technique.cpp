@@ -115,15 +115,16 @@ void umbraThroughStencil(const WedgeFrame& frame, const std::vector<SetupTriangl
   });
 }
 
-// The scaffolding of the wedge passes: for every bin tile that holds a triangle the pass draws
-// (keep(role, triangle)), on the worker owning it, fn(triangle, rect, target, coarse,
+// The scaffolding of the wedge passes: `setup` is the frame's set-up triangles, taken by value
+// and filtered in place to those the pass draws (keep(role, triangle)); for every bin tile that
+// holds one of them, on the worker owning it, fn(triangle, rect, target, coarse,
 // tile_work) for those triangles in input order, where target() gives the tile's depth and LI
 // in L1 copies (raster/tile_copy.h), made on first use and the LI stored back at the end of the
 // tile, and `coarse` holds umbra values per culling tile of 2^coarse_level pixels, added to
 // the LI (wrapping) before it is stored (two-level stencil, raster/tile_offsets.h). Counters
 // are summed in tile order.
 template <class Keep, class Fn>
-void forEachWedgeTriangle(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+void forEachWedgeTriangle(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
                           const EyeBuffers& eye, LiBuffer& li, Stats& stats, int coarse_level,
                           Keep&& keep, Fn&& fn) {
   const int width = li.width(), height = li.height();
@@ -134,11 +135,11 @@ void forEachWedgeTriangle(const WedgeFrame& frame, const std::vector<SetupTriang
     TileCopy<float> depth;
     TileCopy<int16_t> li;
   };
-  std::vector<SetupTriangle> kept;
-  for (const SetupTriangle& t : setup)
-    if (keep(frame.roles[size_t(t.payload)], t)) kept.push_back(t);
+  std::erase_if(setup, [&](const SetupTriangle& t) {
+    return !keep(frame.roles[size_t(t.payload)], t);
+  });
   forEachBinTile(
-      kept, width, height,
+      setup, width, height,
       [&](const TileTriangles& tile) {
         const TileBox& box = tile.box();
         std::optional<Copies> copies;
@@ -165,12 +166,12 @@ void forEachWedgeTriangle(const WedgeFrame& frame, const std::vector<SetupTriang
   addTileWork(work, stats);
 }
 
-void penumbraPass(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+void penumbraPass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
                   const WedgeOptions& options, const RenderContext& context,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   forEachWedgeTriangle(
-      frame, setup, eye, li, stats, options.tile_level, penumbraFace,
+      frame, std::move(setup), eye, li, stats, options.tile_level, penumbraFace,
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, TileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         WedgeKernelWork k;
@@ -189,13 +190,13 @@ void penumbraPass(const WedgeFrame& frame, const std::vector<SetupTriangle>& set
       });
 }
 
-void singlePass(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+void singlePass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
                 const WedgeOptions& options, const RenderContext& context, const EyeBuffers& eye,
                 int full, LiBuffer& li, Stats& stats) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   const bool two_level = options.two_level_stencil && options.cull == CullMode::Full;
   forEachWedgeTriangle(
-      frame, setup, eye, li, stats, options.tile_level,
+      frame, std::move(setup), eye, li, stats, options.tile_level,
       [](const WedgeRole& role, const SetupTriangle& t) {
         return role.umbra_weight != 0 || penumbraFace(role, t);
       },
@@ -244,7 +245,7 @@ void singlePass(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup
       });
 }
 
-void original2002(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+void original2002(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
                   const WedgeOptions& options, const RenderContext& context,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   // Entries (front-facing wedge faces) and umbra quads; back-facing wedge faces add nothing.
@@ -252,7 +253,7 @@ void original2002(const WedgeFrame& frame, const std::vector<SetupTriangle>& set
     return role.wedge != kNoWedge && t.facing * role.face_sign > 0;
   };
   forEachWedgeTriangle(
-      frame, setup, eye, li, stats, options.tile_level,
+      frame, std::move(setup), eye, li, stats, options.tile_level,
       [&](const WedgeRole& role, const SetupTriangle& t) {
         return entry(role, t) || role.umbra_weight != 0;
       },
@@ -323,17 +324,17 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
         umbraThroughStencil(frame, setup, options, context, eye, full, li, stats);
       }
       PassTimer timer(stats, "penumbra");
-      penumbraPass(frame, setup, options, context, eye, full, li, stats);
+      penumbraPass(frame, std::move(setup), options, context, eye, full, li, stats);
       break;
     }
     case WedgeAlgorithm::SinglePass: {
       PassTimer timer(stats, "single-pass");
-      singlePass(frame, setup, options, context, eye, full, li, stats);
+      singlePass(frame, std::move(setup), options, context, eye, full, li, stats);
       break;
     }
     case WedgeAlgorithm::Original2002: {
       PassTimer timer(stats, "wedge-2002");
-      original2002(frame, setup, options, context, eye, full, li, stats);
+      original2002(frame, std::move(setup), options, context, eye, full, li, stats);
       break;
     }
   }
