@@ -160,8 +160,8 @@ bool registerFrameBenchmarks() {
     TechniqueConfig hard("reference");
     hard.options<ReferenceOptions>().hard = true;
     cases.push_back({"reference-hard", hard, 0.3});
-    // 64 rays takes over a second a frame on 2 cores: one iteration per repetition is enough,
-    // the rounds of bench/run_benchmarks.sh give the spread.
+    // 64 rays are slow (bench/README.md): few iterations per repetition are enough, the rounds
+    // of bench/run_benchmarks.sh give the spread.
     TechniqueConfig soft("reference");
     soft.options<ReferenceOptions>().rays = 64;
     cases.push_back({"reference-64", soft, 0.5});

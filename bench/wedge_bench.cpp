@@ -105,7 +105,7 @@ bool registerWedgeBenchmarks() {
   }
   TechniqueConfig oracle("reference");
   oracle.options<ReferenceOptions>().rays = 64;
-  // Over a second a frame on 2 cores: one iteration per repetition; rounds give the spread.
+  // Slow (bench/README.md): few iterations per repetition; rounds give the spread.
   cases.push_back({"reference-64", 640, 427, oracle, 0.5});
   for (const Case& c : cases) {
     const std::string name =

@@ -26,8 +26,8 @@ TEST(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
   {
     std::vector<float> buffer(kBytes / sizeof(float), 1.0f);
     const struct mallinfo2 during = mallinfo2();
-    // If it failed: the buffer was mmapped, and every frame would page-fault it in again (the
-    // policy once compiled to nothing, and 1080p frames spent 15 % of their time in the kernel).
+    // If it failed: the buffer was mmapped, and every frame would page-fault it in again
+    // (core/memory.h; bench/README.md has what that costs a 1080p frame).
     EXPECT_EQ(during.hblkhd, before.hblkhd) << "an 8 MB buffer was mmapped, not taken from the heap";
     EXPECT_GE(during.arena, kBytes);
   }

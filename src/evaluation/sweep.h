@@ -39,7 +39,7 @@ struct SweepOptions {
   bool original_2002 = true;  // one wedge-2002 configuration per scene (Figure 10a)
   int oracle_rays = 64;       // the oracle on `oracle_scene` (0: not run)
   std::string oracle_scene = "columns";
-  int oracle_repeat = 1;  // the oracle takes ~1 s a run on 2 cores
+  int oracle_repeat = 1;  // the oracle's runs are slow (bench/README.md, Technique rows)
   bool smooth_falloff = false;
   // The 2004 paper's passes: every umbra pixel is depth-tested and written. true: the two-level
   // stencil of WedgeOptions::two_level_stencil (full culling only; stencil writes then

@@ -51,9 +51,8 @@ inline bool coversCell(const TileEdges& rect, int level, int width, int height) 
 // adjacent tiles with the same code: runs along a row of culling tiles, extended down while the
 // next row has the same run. Each pixel is drawn once with its tile's code, so the buffers and
 // counts are those of a per-tile walk, but a bin tile with nothing culled is one kernel call
-// instead of up to (32 / 2^level)^2 calls on rows shorter than a SIMD vector (columns, 8x8
-// tiles, soft frame: 1920x1080 67 -> 52 ms, 640x427 16.1 -> 15.4 ms, medians of 3 interleaved
-// runs).
+// instead of up to (32 / 2^level)^2 calls on rows shorter than a SIMD vector (the soft frame's
+// times with and without the merging are in bench/README.md).
 //
 // `decide` must be monotonic: a rect inside another, with a depth range inside the other's,
 // culls at least the parts the larger one culls. The papers' tests are (a plane's maximum over a smaller box is

@@ -87,9 +87,9 @@ void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
     const TileBox box = tileBox(bins, tile, width, height);
     TileCounts& c = counts[tile];
     // The tile is drawn in a cleared copy of its own, which stays in L1 while every triangle of
-    // the tile reads and writes it, then stored once. Drawn in place, two thirds of the depth
-    // kernel's time went to waiting for the first load of each tile row (spheres, 1920x1080):
-    // a tile's 32 rows lie one image row apart, in as many pages.
+    // the tile reads and writes it, then stored once. Drawn in place, the depth kernel waits on
+    // the first load of each tile row (raster/tile_copy.h; bench/README.md): a tile's 32 rows
+    // lie one image row apart, in as many pages.
     TileCopy<float> tile_depth(0.0f);
     TileCopy<uint32_t> tile_primitive(kNoPrimitive);
     DepthTarget target{tile_depth.data(), tile_primitive.data(), kBinTileSize};

@@ -3,8 +3,7 @@
 // triangles one after another: the copy stays in L1 while they read and write it. In place, a
 // tile's 32 rows lie one image row apart, which at 1920 (or 640) pixels is a multiple of 512
 // bytes: the rows of two such buffers fall into a sixteenth of the L1 cache sets, and the first
-// load of each row stalled the eye pass's depth kernel for two thirds of its time (spheres,
-// 1920x1080).
+// load of each row stalls the eye pass's depth kernel for most of its time (bench/README.md).
 #include <algorithm>
 
 #include "core/image.h"

@@ -26,8 +26,8 @@ struct TileEdges {
 // the inside columns are a half-line, solved in double and rounded outwards, so [x_lo, x_hi]
 // holds every covered pixel and at most one uncovered pixel at either end (the SIMD kernels
 // still test every pixel: the span only skips vectors that would find none inside). Shadow
-// volume quads and wedge faces are long and slanted: over their whole rects, 61 % of the SIMD
-// steps of the umbra pass found no pixel inside (columns, 1920x1080).
+// volume quads and wedge faces are long and slanted: over their whole rects, most SIMD steps
+// of the umbra pass would find no pixel inside (bench/README.md).
 class RowSpans {
  public:
   explicit RowSpans(const TileEdges& e) : e_(e) {
@@ -35,8 +35,8 @@ class RowSpans {
   }
   // The rows [y_lo, y_hi] within [e.y0, e.y1] outside which no row holds a covered pixel (false:
   // none does). The rect is the triangle's box within a tile, and a long slanted triangle
-  // crosses only a band of it: 71 % of the rows the umbra pass visited had an empty span
-  // (columns, 640x427), each costing a span() call. Per edge with dx != 0 the column where it
+  // crosses only a band of it: most rows of the umbra pass's rects have an empty span
+  // (bench/README.md), each costing a span() call. Per edge with dx != 0 the column where it
   // is 0 is linear in the row, z(ry) = (-e0 - dy ry) / dx: a covered pixel lies right of every
   // such z with dx > 0 and of the rect's first column, left of every z with dx < 0 and of its
   // last column. Each (left bound, right bound) pair is linear in the row, so the rows where it

@@ -47,11 +47,15 @@ bool setupTileEdges(const SetupTriangle& t, int tx0, int ty0, int tx1, int ty1, 
 
 void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
                        KernelCounts& counts) {
+  // Covered: inside all three edges (>= 0).
   forEachCoveredPixel(e, [&](int x, int y) {
     ++counts.covered;
+    // Depth test: strictly closer (greater reversed-Z) wins, so the first drawn of equal
+    // depths stays.
     const float d = triangleDepthAt(e, x, y);
     const size_t i = size_t(y - target.y0) * size_t(target.stride) + size_t(x - target.x0);
     if (d > target.depth[i]) {
+      // Write depth and primitive id where it passes.
       target.depth[i] = d;
       target.primitive[i] = primitive;
       ++counts.writes;
@@ -61,13 +65,16 @@ void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget
 
 void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rule,
                          const StencilTarget& target, KernelCounts& counts) {
+  // Covered: inside all three edges (>= 0).
   forEachCoveredPixel(e, [&](int x, int y) {
     ++counts.covered;
+    // Depth rule against the stored depth, only where there is a surface (stored depth > 0).
     const size_t i = size_t(y - target.y0) * size_t(target.stride) + size_t(x - target.x0);
     const float stored = target.depth[i];
     const float d = triangleDepthAt(e, x, y);
     const bool pass = rule == DepthRule::Closer ? d > stored : d <= stored;
     if (stored > 0.0f && pass) {
+      // Add the contribution to the stencil where both hold.
       target.stencil[i] += contribution;
       ++counts.writes;
     }

@@ -49,16 +49,20 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
     uint32_t* id_row = target.primitive + size_t(y - target.y0) * target.stride;
     for (int x = e.x0; x <= e.x1; x += lanes) {
       const int rx = x - e.tx0;
+      // Covered: inside all three edges (>= 0).
       const auto in_row = hn::FirstN(di, size_t(e.x1 - x + 1));
       const auto inside_i = hn::And(insideMask(di, e, row, rx, lane_step), in_row);
       if (hn::AllFalse(di, inside_i)) continue;
       const auto inside = hn::RebindMask(df, inside_i);
       counts.covered += hn::CountTrue(df, inside);
+      // Depth test: strictly closer (greater reversed-Z) wins, so the first drawn of equal
+      // depths stays.
       const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
       const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
       const auto write = hn::And(inside, hn::Gt(d, stored));
       if (hn::AllFalse(df, write)) continue;
       counts.writes += hn::CountTrue(df, write);
+      // Write depth and primitive id where it passes.
       hn::BlendedStore(d, write, df, depth_row + (x - target.x0));
       hn::BlendedStore(id, hn::RebindMask(du, write), du, id_row + (x - target.x0));
     }
@@ -80,7 +84,7 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
   const RowSpans spans(e);
   int y_lo, y_hi;
   if (!spans.rows(y_lo, y_hi)) return;
-  // Counted in registers: through `counts` every vector was a read-modify-write in memory.
+  // Counted in registers: through `counts` every vector would be a read-modify-write in memory.
   uint64_t covered = 0, writes = 0;
   // The edge values step by dx * lanes from one vector to the next along a row.
   const hn::Vec<decltype(di)> vector_step[3] = {hn::Set(di, e.dx[0] * lanes),
@@ -102,19 +106,21 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
     for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step[0]),
              edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2])) {
       const int rx = x - e.tx0;
-      // Inside all three edges (>= 0) and within the span.
+      // Covered: inside all three edges (>= 0); lanes past the span are off.
       auto inside_i = hn::And(hn::FirstN(di, size_t(x_hi - x + 1)), hn::Gt(edge0, minus_one));
       inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
       inside_i = hn::And(inside_i, hn::Gt(edge2, minus_one));
       if (hn::AllFalse(di, inside_i)) continue;
       const auto inside = hn::RebindMask(df, inside_i);
       covered += hn::CountTrue(df, inside);
+      // Depth rule against the stored depth, only where there is a surface (stored depth > 0).
       const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
       const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
       const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
       const auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
       if (hn::AllFalse(df, write)) continue;
       writes += hn::CountTrue(df, write);
+      // Add the contribution to the stencil where both hold.
       const auto write_i = hn::RebindMask(di, write);
       const auto s = hn::MaskedLoad(write_i, di, stencil_row + (x - target.x0));
       hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + (x - target.x0));

@@ -70,7 +70,8 @@ struct SetupTriangle {
   uint8_t flags;                 // the input triangle's flags
 };
 
-// Clips each input triangle to the near plane and the guard band, snaps to 28.4 and sets it up.
+// Clips each input triangle to the near plane and the guard band, snaps to 28.4 and sets it up:
+// edge functions from the snapped vertices, the depth plane from the unsnapped ones.
 // Output keeps input order (a clipped triangle's fan pieces stay together), so passes that
 // resolve ties by drawing order are deterministic. Zero-area and off-screen triangles vanish.
 std::vector<SetupTriangle> setupTriangles(const ClipTriangles& triangles, int width, int height);

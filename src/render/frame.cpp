@@ -28,7 +28,7 @@ void FrameRenderer::render(FrameResult& frame) const {
   frame.eye_stats = Stats{};
   frame.total = Stats{};
   // The previous frame's buffers go first: alive while this frame allocates its own, they
-  // made the heap grow into fresh pages every frame (bench/README.md). The colour image is
+  // would make the heap grow into fresh pages every frame (bench/README.md). The colour image is
   // kept and overwritten (shadeFrameInto).
   frame.eye = EyeBuffers{};
   frame.lights.clear();

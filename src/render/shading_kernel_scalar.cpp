@@ -100,6 +100,7 @@ void shadeRowScalar(const ShadingFrame& frame, int y, ShadingTriangleTable& tria
       out[x] = frame.background;
       continue;
     }
+    // The pixel's triangle record (ShadingTriangleTable::get).
     const ShadingTriangle& t = triangles.get(id, scratch);
     // Step 1: the view ray and the visible point on it.
     const float fx = float(x) + 0.5f;

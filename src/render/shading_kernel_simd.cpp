@@ -143,7 +143,8 @@ void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triang
     const MF valid = hn::And(hn::RebindMask(df, valid_u), hn::Gt(depth, zero));
     V3 color = background;
     if (!hn::AllFalse(df, valid)) {
-      // The triangle of each valid lane: the first valid lane's, then the others'.
+      // The pixel's triangle record (ShadingTriangleTable::get). Lanes: the first valid
+      // lane's triangle, then the others'.
       auto remaining = hn::RebindMask(du, valid);
       {
         const uint32_t id = id_row[x + size_t(hn::FindFirstTrue(du, remaining))];
@@ -166,9 +167,11 @@ void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triang
       const VF scale = hn::Div(near_plane, depth);
       const V3 p{hn::Add(eye.x, hn::Mul(ray.x, scale)), hn::Add(eye.y, hn::Mul(ray.y, scale)),
                  hn::Add(eye.z, hn::Mul(ray.z, scale))};
-      // Step 2: the shading normal: n0 for flat triangles, else the corner normals
-      // interpolated with clamped barycentrics and normalised (skipped when every valid lane's
-      // triangle is flat).
+      // Step 2: the shading normal. A flat triangle's is n0; otherwise the corner normals are
+      // interpolated with barycentrics clamped to the triangle (the unprojected point is on it
+      // only up to depth rounding, and a point just outside must not extrapolate), then
+      // normalised, which also removes the clamped weights' sum. Lanes: the interpolation is
+      // skipped when every valid lane's triangle is flat.
       const V3 n0 = Lanes3(tris, &ShadingTriangle::n0);
       const V3 geometric = Lanes3(tris, &ShadingTriangle::geometric);
       V3 n = n0;
@@ -195,7 +198,8 @@ void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triang
             geometric);
         n = Select3(flat, n0, smooth);
       }
-      // Step 3: turn it to the side the eye sees, as the geometric normal decides.
+      // Step 3: turn it to the side the eye sees, as the geometric normal decides (an
+      // interpolated normal may lean away from the eye near a silhouette of a front face).
       const V3 flipped{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)};
       n = Select3(hn::Gt(Dot3(geometric, ray), zero), flipped, n);
       // Step 4: unit direction to the eye, for the half vector.

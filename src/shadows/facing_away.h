@@ -22,9 +22,9 @@ namespace penumbra {
 //
 // Decided once per triangle, the first time a pixel asks, and remembered in a table shared by
 // the threads of one resolve (a byte per scene triangle; the answer does not depend on who
-// decides it first). Remembering only the last triangle asked was not enough: a row crossing
+// decides it first). Remembering only the last triangle asked is not enough: a row crossing
 // the finely tessellated columns of `columns` meets a new triangle every few pixels, and the
-// decisions took 3 % of the soft-shadow frame.
+// decisions become a visible share of the soft-shadow frame (bench/README.md).
 class FacingAway {
  public:
   FacingAway(const Scene& scene, const Light& light, const View& view)

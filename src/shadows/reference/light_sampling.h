@@ -38,7 +38,7 @@ class PixelRandom {
 };
 
 // Per-sample work is in float: Embree takes float rays anyway, and the sqrt and sincos per
-// sample took about 45% of a soft render's time when done in double (perf, one thread).
+// sample in double are a large share of a soft render's time (bench/README.md).
 // Per-pixel set-up (the cone) is computed in double and then rounded.
 
 // A point of the unit disk in polar form.

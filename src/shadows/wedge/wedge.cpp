@@ -49,7 +49,7 @@
 //   may overlap or leave a notch at the tip. Each umbra quad follows its own wedge's front
 //   ray, and a connector quad (a == b == the vertex) fans between the two directions at
 //   infinity, so the volume stays closed and every front face is still exactly its umbra quad.
-//   The notch lies inside that closed umbra volume, so with no wedge over it it rendered as a
+//   The notch lies inside that closed umbra volume, so with no wedge over it it renders as a
 //   short dark dash at the tip (bunny-lowres's ears); one extra wedge per notch, as Figure 7
 //   suggests, covers it (wedge_gap.h: a cone from the vertex between the two end planes whose
 //   front face is the connector). Counted in split_vertices. (If the shared plane
@@ -60,7 +60,8 @@
 //   centre (wedge_sides.h, loneSide); counted in unpaired_ends.
 // - Figure 6 (the side planes cross inside the wedge): wedge_sides.h, cutWhereSidesCross.
 // - Figure 7 (extra wedges at acute vertices): only the one gap wedge at split vertices above;
-//   the option (several wedges around every acute vertex) throws.
+//   the paper's fans of several wedges around every acute vertex are not built, and no option
+//   builds them (README, "Differences from the papers").
 namespace penumbra {
 
 using wedge_detail::EdgePlanes;

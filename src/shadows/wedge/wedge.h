@@ -111,8 +111,9 @@ struct UmbraQuad {
 };
 
 // The 2002 paper's optional extra wedges around acute silhouette vertices (section 4.1,
-// Figure 7) are not built: each acute corner gets a gap wedge instead (wedge_gap.h), and the
-// README's "Differences from the papers" says why the fans were measured and left out.
+// Figure 7) are not built, and no option builds them: a corner whose shared side plane does
+// not fit is split, and the notch the two end planes leave gets one gap wedge (wedge_gap.h).
+// The README's "Differences from the papers" says why the fans were measured and left out.
 struct WedgeBuildOptions {
   // Edges within this angle (degrees, in [0, 90)) of the direction to the light at either end
   // are "nearly parallel" (section 8): they get no penumbra wedge and their neighbours are

@@ -60,8 +60,8 @@ WedgeRole withFace(WedgeRole role, WedgeFace face) {
 // (section 4.1, Figure 6) the four planes alone close the wedge at the line where they meet;
 // the wedge builder's bottom-plane cut (Wedge::finite) is not used, because the region
 // between the cut and that line is then covered by no wedge at all and reads as umbra: the
-// shadows of thin parts (the bunny's ears) ended in black bars, and bunny-lowres's penumbra
-// error against the oracle was 0.133 instead of 0.091.
+// shadows of thin parts (the bunny's ears) end in black bars, and bunny-lowres's penumbra
+// error against the oracle grows (docs/wedge-accuracy.md).
 //
 // Vertices are the feasible intersections of three of the five constraints (the four planes
 // and w = 0); faces are the vertices on each constraint, ordered around it. Bit k of `on`: the
@@ -92,8 +92,8 @@ dvec4 cross4(const dvec4& a, const dvec4& b, const dvec4& c) {
 }
 
 // A number in [0, 4) that increases with the angle of (x, y) from the x axis, as atan2(y, x)
-// does (the same order), for a tenth of the cost: sorting face vertices by it was 40 % of the
-// hull's time.
+// does (the same order), at a fraction of its cost: sorting the face vertices by atan2 is a
+// large part of the hull's time (bench/README.md).
 double pseudoAngle(double x, double y) {
   const double sum = std::fabs(x) + std::fabs(y);
   if (!(sum > 0.0)) return 0.0;
@@ -266,7 +266,7 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
   // SolidWithHoles). Two-sided, a silhouette edge where both sheets of such a mesh meet has
   // multiplicity 2: two coincident wedges and an umbra count of 2, so the LI is 255 (2 v - 1)
   // and the inner half of the penumbra clamps to black (the overlap the 2002 paper names as a
-  // limitation, section 8; stanford-bunny's penumbra error against the oracle was 0.30). With
+  // limitation, section 8: README, "Known limitation: overlapping wedges"). With
   // a zero radius there is no penumbra, and the umbra must be the hard shadow volume bit for
   // bit (wedge_frame.h), so the hard volume's casters are kept. The soft volume lies within
   // distance r of the hard volume from the centre, so growing the caster's box by r keeps the

@@ -50,7 +50,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
   const RowSpans spans(e);
   int y_lo, y_hi;
   if (!spans.rows(y_lo, y_hi)) return;
-  WedgeKernelCounts local;  // in registers: through `counts` each update went to memory
+  WedgeKernelCounts local;  // in registers: through `counts` each update would go to memory
   for (int y = y_lo; y <= y_hi; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
@@ -69,6 +69,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
     for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step[0]),
              edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2])) {
       const int rx = x - e.tx0;
+      // Covered: inside all three edges (>= 0); lanes past the span are off.
       auto inside_i = hn::FirstN(di, size_t(x_hi - x + 1));
       inside_i = hn::And(inside_i, hn::Gt(edge0, minus_one));
       inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
@@ -77,10 +78,12 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
       const auto covered = hn::RebindMask(df, inside_i);
       local.covered += hn::CountTrue(df, covered);
       const auto stored = hn::MaskedLoad(covered, df, depth_row + (x - target.x0));
+      // background: nothing to shadow
       const auto surface = hn::And(covered, hn::Gt(stored, zero));
       if (hn::AllFalse(df, surface)) continue;
       auto value = hn::Zero(di);
       auto write = hn::And(surface, hn::Lt(stored, zero));  // all false, of the right type
+      // Umbra part: add umbra_value where the triangle's depth passes `rule`.
       if (work.umbra_value != 0) {
         const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
         const auto pass = work.rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
@@ -88,6 +91,7 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
         value = hn::IfThenElseZero(hn::RebindMask(di, umbra), hn::Set(di, work.umbra_value));
         write = umbra;
       }
+      // Penumbra part: is the depth-buffer point inside all four wedge planes?
       if (w != nullptr) {
         const auto sx = hn::Add(hn::Iota(df, float(x)), half);
         const auto f = planeAt(df, w->front, sx, sy, stored);
@@ -120,11 +124,13 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
             s = hn::Sub(hn::Mul(hn::Mul(hn::Set(df, 3.0f), s), s),
                         hn::Mul(hn::Mul(hn::Mul(hn::Set(df, 2.0f), s), s), s));
           }
+          // round(li_scale s): to nearest, ties to even.
           const auto penumbra = hn::NearestInt(hn::Mul(s, hn::Set(df, work.li_scale)));
           value = hn::Add(value, hn::IfThenElseZero(hn::RebindMask(di, in), penumbra));
           write = hn::Or(write, in);
         }
       }
+      // Add to the 16-bit LI buffer (liAdd, wrapping), pixel by pixel.
       if (hn::AllFalse(df, write)) continue;
       hn::Store(value, di, values);
       hn::Store(hn::VecFromMask(di, hn::RebindMask(di, write)), di, writes);

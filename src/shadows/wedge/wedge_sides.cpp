@@ -189,10 +189,10 @@ bool sideFits(const UnitEdge& e, const EdgePlanes& planes, const Plane& inward,
   // corners (two front planes meet 1 / sin(corner / 2) times farther out than one), and the
   // umbra quads following them become spikes that the wedges, cut where their side planes
   // cross (Figure 6), no longer cover: long dark streaks. kCone times the cone is allowed: a
-  // right-angle corner needs sqrt(2), a 60 degree one 2. Against the ray-traced oracle (400 x 300,
-  // wedge-3pass) 2 cut the fractal scene's mean error from 0.0119 to 0.0050 and year2002's from
-  // 0.0224 to 0.0213, and changed nothing in spheres, columns and multilight; 1.2 splits
-  // right angles too and was worse on fractal (0.0052) and columns.
+  // right-angle corner needs sqrt(2), a 60 degree one 2. Against the ray-traced oracle, 2 more
+  // than halves the fractal scene's mean error, lowers year2002's and changes nothing in
+  // spheres, columns and multilight; 1.2 splits right angles too and is worse on fractal and
+  // columns (docs/wedge-accuracy.md has the errors).
   constexpr double kCone = 2.0;
   const dvec3 away = (at_b ? e.b : e.a) - c;
   const double dist = glm::length(away);

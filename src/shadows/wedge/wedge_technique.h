@@ -22,8 +22,8 @@ struct WedgeOptions {
   VolumeMode volume_mode = VolumeMode::Auto;
   CullMode cull = CullMode::Full;
   // Culling tiles of 2^tile_level pixels, 1..8. 16 x 16 by default: the fastest frame of
-  // `penumbra bench` on fractal and year2002 and within 5 % of it on columns, for both
-  // implementations (the paper's optimum is 8 x 8 to 32 x 32, section 7;
+  // `penumbra bench` on fractal and year2002 and close to it on columns, for both
+  // implementations (the paper's optimum is 8 x 8 to 32 x 32, section 7; the times are in
   // docs/reproducing-2004.md).
   int tile_level = 4;
   // Culling tiles of the three-pass implementation's umbra pass, a stencil shadow volume pass
