@@ -4,34 +4,52 @@
 //
 //   penumbra::Scene scene = penumbra::loadScene("spheres");   // or a .json scene, or a mesh
 //   penumbra::FrameOptions options;
-//   options.technique.kind = penumbra::parseTechniqueName("reference");
+//   options.technique = penumbra::TechniqueConfig("reference");
+//   options.technique.set("rays", "64");                       // an option as on the command line
 //   penumbra::FrameResult frame = penumbra::renderFrame(scene, options);
 //   penumbra::writePng("out/spheres.png", frame.color);
 //   penumbra::writeExr("out/vis.exr", frame.lights[0].visibility);
 //   penumbra::ImageDifference d =
 //       penumbra::compareImages(frame.lights[0].visibility, other_visibility, 0.01);
 //
-// The headers below live in the library's src/ folder, which must be on the include path.
+// A technique's options are also a plain struct (shadows/*_options.h), for typed access:
+//
+//   penumbra::TechniqueConfig wedges("wedge-3pass");
+//   wedges.options<penumbra::WedgeOptions>().cull = penumbra::CullMode::ZMax;
+//
+// A frame loop prepares the technique for the scene once (the oracle's BVH, say):
+//
+//   penumbra::FrameRenderer renderer(scene, options);
+//   penumbra::FrameResult frame;
+//   for (...) renderer.render(frame);   // reuses frame's memory
+//
+// Installed, the headers are <penumbra/...> under the package's include folder:
+// find_package(Penumbra) and link Penumbra::penumbra (README, "Use it as a library").
 // Every error a caller can cause throws penumbra::Error with a message naming the input.
 
-#include "core/error.h"
-#include "core/image.h"
-#include "core/math.h"
-#include "core/parallel.h"
-#include "core/stats.h"
-#include "core/view.h"
-#include "metrics/heatmap.h"
-#include "metrics/image_compare.h"
-#include "render/frame.h"
-#include "render/image_io.h"
-#include "render/shading.h"
-#include "render/stats_json.h"
-#include "scene/builtin_scenes.h"
-#include "scene/camera.h"
-#include "scene/light.h"
-#include "scene/load_mesh.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
-#include "scene/scene.h"
-#include "scene/scene_file.h"
-#include "shadows/technique.h"
+#include <penumbra/core/error.h>
+#include <penumbra/core/image.h>
+#include <penumbra/core/math.h>
+#include <penumbra/core/parallel.h>
+#include <penumbra/core/stats.h>
+#include <penumbra/core/view.h>
+#include <penumbra/metrics/heatmap.h>
+#include <penumbra/metrics/image_compare.h>
+#include <penumbra/raster/depth_buffer.h>
+#include <penumbra/render/frame.h>
+#include <penumbra/render/image_io.h>
+#include <penumbra/render/stats_json.h>
+#include <penumbra/scene/builtin_scenes.h>
+#include <penumbra/scene/camera.h>
+#include <penumbra/scene/edges.h>
+#include <penumbra/scene/light.h>
+#include <penumbra/scene/load_mesh.h>
+#include <penumbra/scene/material.h>
+#include <penumbra/scene/mesh.h>
+#include <penumbra/scene/scene.h>
+#include <penumbra/scene/scene_file.h>
+#include <penumbra/shadows/reference_options.h>
+#include <penumbra/shadows/technique.h>
+#include <penumbra/shadows/technique_options.h>
+#include <penumbra/shadows/volume_options.h>
+#include <penumbra/shadows/wedge_options.h>

@@ -13,13 +13,9 @@
 #include "raster/triangle_setup.h"
 #include "scene/scene.h"
 #include "shadows/silhouette.h"
+#include "shadows/volume_options.h"
 
 namespace penumbra {
-
-// How shadow volumes count: from the eye (z-pass, Heidmann) or from infinity (z-fail,
-// Everitt & Kilgard). Auto picks z-fail per caster only where the eye may be inside its volume.
-enum class VolumeMode { Auto, ZPass, ZFail };
-std::string volumeModeName(VolumeMode mode);  // "auto", "zpass", "zfail"
 
 // True when a shadow volume cast from `light` by geometry within `caster` may contain part of
 // the near-plane rectangle: the convex hull of the light and that rectangle (Lengyel's

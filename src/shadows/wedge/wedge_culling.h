@@ -4,19 +4,9 @@
 
 #include "raster/tile_kernels.h"
 #include "shadows/wedge/wedge_screen.h"
+#include "shadows/wedge_options.h"
 
 namespace penumbra {
-
-// Tile z-min/z-max occlusion culling of the wedge passes (2004 paper, section 4).
-enum class CullMode {
-  None,  // every covered pixel reads its depth
-  ZMax,  // only the test that common hardware has: skip tiles whose farthest depth is nearer
-         // than the primitive (for the penumbra: than the whole wedge)
-  Full,  // z-min and z-max: also skip tiles entirely in front of the wedge, and tiles whose
-         // screen-space box lies outside a wedge plane (n- and p-vertex tests, Figure 7)
-};
-std::string cullModeName(CullMode mode);  // "none", "zmax", "full"
-CullMode parseCullMode(const std::string& name);  // throws penumbra::Error naming the known
 
 // A wedge's culling planes with their error margins, set up once per wedge and frame.
 struct WedgeCullPlanes {

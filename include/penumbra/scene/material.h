@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "core/math.h"
+#include <penumbra/core/math.h>
 
 namespace penumbra {
 

@@ -3,8 +3,8 @@
 // technique contract": every counter and the time of every pass) and a one-line summary.
 #include <string>
 
-#include "render/frame.h"
-#include "shadows/technique.h"
+#include <penumbra/render/frame.h>
+#include <penumbra/shadows/technique.h>
 
 namespace penumbra {
 

@@ -12,7 +12,7 @@
 //
 // Screen space: pixel (x, y) covers [x, x+1) x [y, y+1), its centre is (x + 0.5, y + 0.5),
 // y grows downwards (row 0 is the top of the image).
-#include "core/math.h"
+#include <penumbra/core/math.h>
 
 namespace penumbra {
 

@@ -2,8 +2,8 @@
 // Error and visibility images for people, as 8-bit RGB ready to write (render/image_io.h).
 #include <cstdint>
 
-#include "core/image.h"
-#include "core/math.h"
+#include <penumbra/core/image.h>
+#include <penumbra/core/math.h>
 
 namespace penumbra {
 

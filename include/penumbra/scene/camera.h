@@ -1,6 +1,6 @@
 #pragma once
-#include "core/math.h"
-#include "core/view.h"
+#include <penumbra/core/math.h>
+#include <penumbra/core/view.h>
 
 namespace penumbra {
 

@@ -3,12 +3,12 @@
 #include <memory>
 #include <vector>
 
-#include "core/image.h"
-#include "core/stats.h"
-#include "core/view.h"
-#include "raster/depth_buffer.h"
-#include "scene/scene.h"
-#include "shadows/technique.h"
+#include <penumbra/core/image.h>
+#include <penumbra/core/stats.h>
+#include <penumbra/core/view.h>
+#include <penumbra/raster/depth_buffer.h>
+#include <penumbra/scene/scene.h>
+#include <penumbra/shadows/technique.h>
 
 namespace penumbra {
 

@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <string>
 
-#include "core/image.h"
-#include "core/math.h"
+#include <penumbra/core/image.h>
+#include <penumbra/core/math.h>
 
 namespace penumbra {
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/math.h"
+#include <penumbra/core/math.h>
 
 namespace penumbra {
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/error.h"
+#include <penumbra/core/error.h>
 
 namespace penumbra {
 

@@ -18,13 +18,13 @@
 #include <utility>
 #include <vector>
 
-#include "core/error.h"
-#include "core/image.h"
-#include "core/stats.h"
-#include "core/view.h"
-#include "raster/depth_buffer.h"
-#include "scene/scene.h"
-#include "shadows/technique_options.h"
+#include <penumbra/core/error.h>
+#include <penumbra/core/image.h>
+#include <penumbra/core/stats.h>
+#include <penumbra/core/view.h>
+#include <penumbra/raster/depth_buffer.h>
+#include <penumbra/scene/scene.h>
+#include <penumbra/shadows/technique_options.h>
 
 namespace penumbra {
 

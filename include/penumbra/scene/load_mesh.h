@@ -2,7 +2,7 @@
 // Mesh files (OBJ, PLY, glTF/GLB, and whatever else assimp reads) into one welded Mesh.
 #include <string>
 
-#include "scene/mesh.h"
+#include <penumbra/scene/mesh.h>
 
 namespace penumbra {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
+#include <penumbra/scene/scene.h>
 
 namespace penumbra {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/math.h"
+#include <penumbra/core/math.h>
 
 namespace penumbra {
 

@@ -2,7 +2,7 @@
 // The JSON scene format, documented in docs/scene-format.md.
 #include <string>
 
-#include "scene/scene.h"
+#include <penumbra/scene/scene.h>
 
 namespace penumbra {
 

@@ -6,11 +6,11 @@
 #include <utility>
 #include <vector>
 
-#include "scene/camera.h"
-#include "scene/edges.h"
-#include "scene/light.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
+#include <penumbra/scene/camera.h>
+#include <penumbra/scene/edges.h>
+#include <penumbra/scene/light.h>
+#include <penumbra/scene/material.h>
+#include <penumbra/scene/mesh.h>
 
 namespace penumbra {
 

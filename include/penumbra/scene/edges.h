@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/mesh.h"
+#include <penumbra/scene/mesh.h>
 
 namespace penumbra {
 
