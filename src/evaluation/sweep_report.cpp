@@ -172,25 +172,23 @@ void writeSweepCsv(std::ostream& out, const SweepResult& result) {
   for (const SweepRow& r : result.rows)
     for (const auto& [name, ms] : r.pass_ms)
       if (std::find(passes.begin(), passes.end(), name) == passes.end()) passes.push_back(name);
-  out << "scene,width,height,lights,technique,cull,tile_level,tile_size,rays,runs,"
-         "pixels_rasterized,z_reads,stencil_writes,memory_accesses,tiles_tested,tiles_culled,"
-         "tiles_accepted,tile_range_reads,memory_accesses_with_tiles,penumbra_tests,"
-         "penumbra_inside,"
-         "silhouette_edges,wedges,triangles,shadow_rays,counters_repeatable,technique_ms,"
-         "technique_ms_min,technique_ms_max,technique_cpu_ms";
+  // The counters in the order they are declared (core/stats.h), then the ones derived from
+  // them; the oracle's `rays` counter is `shadow_rays` here, `rays` being its rays per pixel.
+  out << "scene,width,height,lights,technique,cull,tile_level,tile_size,rays,runs";
+  for (const StatsCounter& counter : kStatsCounters)
+    out << "," << (std::string(counter.name) == "rays" ? "shadow_rays" : counter.name);
+  out << ",memory_accesses,tile_range_reads,memory_accesses_with_tiles,counters_repeatable,"
+         "technique_ms,technique_ms_min,technique_ms_max,technique_cpu_ms";
   for (const std::string& pass : passes) out << "," << passColumn(pass);
   out << ",eye_ms,shade_ms,frame_ms,cull_mismatch_pixels,pixels_differing_from_3pass,"
          "max_diff_from_3pass\n";
   for (const SweepRow& r : result.rows) {
-    const Stats& c = r.counters;
-    out << fmt::format("{},{},{},{},{},{},{},{},{},{},", csvField(r.scene), r.width, r.height,
+    out << fmt::format("{},{},{},{},{},{},{},{},{},{}", csvField(r.scene), r.width, r.height,
                        r.lights, r.techniqueLabel(), cullModeName(r.cull), r.tile_level,
                        r.tile_level > 0 ? 1 << r.tile_level : 0, r.rays, r.runs);
-    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},", c.pixels_rasterized,
-                       c.z_reads, c.stencil_writes, r.memoryAccesses(), c.tiles_tested,
-                       c.tiles_culled, c.tiles_accepted, r.tileRangeReads(),
-                       r.memoryAccessesWithTiles(), c.penumbra_tests,
-                       c.penumbra_inside, c.silhouette_edges, c.wedges, c.triangles, c.rays);
+    for (const StatsCounter& counter : kStatsCounters) out << "," << r.counters.*counter.field;
+    out << fmt::format(",{},{},{},", r.memoryAccesses(), r.tileRangeReads(),
+                       r.memoryAccessesWithTiles());
     out << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f}", r.counters_repeatable ? 1 : 0,
                        r.technique_ms, r.technique_ms_min, r.technique_ms_max, r.technique_cpu_ms);
     for (const std::string& pass : passes) out << fmt::format(",{:.4f}", r.passMs(pass));
