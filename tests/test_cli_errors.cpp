@@ -39,6 +39,25 @@ TEST_F(Cli, UnknownTechniqueIsAnError) {
   expectError(run("render spheres --technique bogus --quiet"), "bogus");
 }
 
+// An option the chosen technique does not have is refused with the technique's own options
+// named, never silently ignored; and `render --technique NAME --help` and `techniques NAME`
+// list that technique's options with their defaults.
+TEST_F(Cli, TechniqueOptionsBelongToTheirTechnique) {
+  const CliRun rays = run("render spheres --technique volume --rays 4 --quiet");
+  expectError(rays, "--rays is not an option of technique 'volume'");
+  EXPECT_NE(rays.err.find("--volume-mode"), std::string::npos) << rays.err;
+  expectError(run("render spheres --technique reference --seed -1 --quiet"), "--seed");
+  const CliRun help = run("render --technique reference --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--rays N"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("(default: 256)"), std::string::npos) << help.out;
+  const CliRun listed = run("techniques wedge-1pass");
+  EXPECT_EQ(listed.exit_code, 0);
+  EXPECT_NE(listed.out.find("--tile-size N"), std::string::npos) << listed.out;
+  EXPECT_EQ(listed.out.find("--umbra-tile-size"), std::string::npos) << listed.out;  // 3-pass only
+  expectError(run("techniques bogus"), "bogus");
+}
+
 TEST_F(Cli, BadArgumentsAreErrors) {
   expectError(run(""), "subcommand");
   expectError(run("render spheres --rays 0 --quiet"), "rays");

@@ -3,6 +3,7 @@
 // after parsing; behaviour lives in the library (DESIGN.md style rule 8), these only parse and
 // print. Errors are thrown (penumbra::Error and friends) and reported by main().
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -18,5 +19,8 @@ Subcommand addCompareCommand(CLI::App& app);
 Subcommand addScenesCommand(CLI::App& app);
 Subcommand addBenchCommand(CLI::App& app);
 Subcommand addTechniquesCommand(CLI::App& app);
+// One technique's summary and options with their defaults (`penumbra techniques NAME`); throws
+// penumbra::Error for an unknown name.
+void printTechnique(const std::string& name);
 
 }  // namespace penumbra::cli

@@ -47,7 +47,18 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    if (e.get_exit_code() == 0) {  // --help
+      const int code = app.exit(e);
+      // `render --technique NAME --help`: that technique's own options too.
+      if (argc > 1 && std::string(argv[1]) == "render") {
+        for (int i = 2; i + 1 < argc; ++i)
+          if (std::string(argv[i]) == "--technique") {
+            std::cout << "\n";
+            penumbra::cli::printTechnique(argv[i + 1]);
+          }
+      }
+      return code;
+    }
     return reportError(std::string(e.what()) + " (run 'penumbra --help')");
   }
   for (const auto& command : commands) {

@@ -26,23 +26,27 @@ int runTechniques(const std::string& name) {
                                info.summary);
     return 0;
   }
+  printTechnique(name);
+  return 0;
+}
+
+}  // namespace
+
+void printTechnique(const std::string& name) {
   const TechniqueInfo& info = findTechnique(name);
   const TechniqueConfig defaults(info.name);
   std::cout << fmt::format("{} [{}]: {}\n", info.name, claims(info.traits), info.summary);
   if (!info.aliases.empty()) std::cout << fmt::format("also called: {}\n", fmt::join(info.aliases, ", "));
   if (info.options.specs().empty()) {
     std::cout << "no options\n";
-    return 0;
+    return;
   }
   std::cout << "options (give them to 'penumbra render --technique " << info.name << "'):\n";
   for (const OptionSpec& spec : info.options.specs()) {
     std::cout << fmt::format("  {:<32} {} (default: {})\n", spec.usage(), spec.help,
                              defaults.get(spec.name));
   }
-  return 0;
 }
-
-}  // namespace
 
 Subcommand addTechniquesCommand(CLI::App& app) {
   auto name = std::make_shared<std::string>();
