@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "render/frame.h"
+#include "render/frame_timing.h"
 #include "render/image_io.h"
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"
@@ -38,6 +39,8 @@ struct RenderArgs {
   int width = 0;
   int height = 0;
   int threads = 0;
+  int frames = 0;  // 0: one cold frame; N: N warm frames timed after `warmup` untimed ones
+  int warmup = 1;
   bool scalar = false;
   std::string visibility_exr;
   std::string visibility_png;
@@ -90,7 +93,15 @@ int runRender(const RenderArgs& args) {
   requireExtension(args.stats_json, ".json", "--stats");
 
   const Scene scene = loadScene(args.scene);
-  const FrameResult result = renderFrame(scene, options);
+  FrameResult result;
+  std::string timings;
+  if (args.frames > 0) {
+    // The technique is prepared once; the outputs are the last frame's.
+    const FrameRenderer renderer(scene, options);
+    timings = frameTimingsLine(timeFrames(renderer, args.frames, args.warmup, result));
+  } else {
+    result = renderFrame(scene, options);
+  }
 
   std::vector<std::string> written;
   const std::string output = args.output.empty() ? defaultOutput(scene.name) : args.output;
@@ -117,6 +128,7 @@ int runRender(const RenderArgs& args) {
 
   if (!args.quiet) {
     std::cout << frameSummaryLine(scene, options, result) << "\n";
+    if (!timings.empty()) std::cout << timings << "\n";
     std::cout << fmt::format("wrote {}\n", fmt::join(written, ", "));
   }
   return 0;
@@ -159,6 +171,13 @@ Subcommand addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   cmd->add_flag("--scalar", args->scalar, "Run the scalar twins of the SIMD kernels");
+  cmd->add_option("--frames", args->frames,
+                  "Time N warm frames (technique prepared once) and print min / median / max "
+                  "and each pass's median; outputs are the last frame's")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--warmup", args->warmup, "Untimed frames before --frames")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
   cmd->add_option("--visibility", args->visibility_exr,
                   "Visibility EXR of light 0 (light i > 0: name.i.exr)");
   cmd->add_option("--visibility-png", args->visibility_png,

@@ -16,6 +16,7 @@
 #include "metrics/image_compare.h"
 #include "raster/tile_kernels.h"
 #include "render/eye_pass.h"
+#include "render/frame_timing.h"
 #include "render/shading_reuse.h"
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"
@@ -24,13 +25,6 @@
 
 namespace penumbra {
 namespace {
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 double cpuSeconds() {
   timespec t{};
@@ -137,12 +131,12 @@ void record(Pending& p, const Stats& stats, double ms, double cpu_ms) {
 
 SweepRow finish(Pending& p, double eye_ms, double shade_ms) {
   SweepRow row = std::move(p.row);
-  row.technique_ms = median(p.total_ms);
+  row.technique_ms = medianOf(p.total_ms);
   row.technique_ms_min = *std::min_element(p.total_ms.begin(), p.total_ms.end());
   row.technique_ms_max = *std::max_element(p.total_ms.begin(), p.total_ms.end());
-  row.technique_cpu_ms = median(p.cpu_ms);
+  row.technique_cpu_ms = medianOf(p.cpu_ms);
   for (const std::string& name : p.pass_order)
-    row.pass_ms.emplace_back(name, median(p.pass_runs[name]));
+    row.pass_ms.emplace_back(name, medianOf(p.pass_runs[name]));
   row.eye_ms = eye_ms;
   row.shade_ms = shade_ms;
   row.frame_ms = eye_ms + row.technique_ms + shade_ms;
@@ -189,7 +183,7 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
     eye = renderEyePass(scene, view, eye_stats, o.simd);
     eye_runs.push_back(eye_stats.totalMs());
   }
-  const double eye_ms = median(eye_runs);
+  const double eye_ms = medianOf(eye_runs);
 
   // CullMode::None first for every implementation: the other modes are compared against it.
   std::vector<CullMode> modes = o.cull_modes;
@@ -270,7 +264,7 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
       shade_runs.push_back(1e3 * secondsSince(start));
     }
   }
-  const double shade_ms = median(shade_runs);
+  const double shade_ms = medianOf(shade_runs);
 
   std::vector<SweepRow> rows;
   for (Pending& p : configs) rows.push_back(finish(p, eye_ms, shade_ms));

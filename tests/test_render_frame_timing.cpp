@@ -1,0 +1,66 @@
+// Warm-frame timing (render/frame_timing.h): what `penumbra render --frames N` prints.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "cli_test_util.h"
+#include "core/error.h"
+#include "render/frame_timing.h"
+#include "scene/builtin_scenes.h"
+
+namespace penumbra {
+namespace {
+
+// N timed frames after the warm-up, every pass of the frame with a median, min <= median <= max;
+// the result holds a complete frame. If this failed, the warm timings would count the wrong
+// frames, drop passes, or leave the caller a half-rendered frame to write.
+TEST(FrameTiming, TimesTheRequestedFramesAndEveryPass) {
+  const Scene scene = builtinScene("spheres");
+  FrameOptions options;
+  options.width = 64;
+  options.height = 48;
+  options.technique = TechniqueConfig("wedge-3pass");
+  const FrameRenderer renderer(scene, options);
+  FrameResult frame;
+  const FrameTimings t = timeFrames(renderer, 3, 2, frame);
+  EXPECT_EQ(t.frame_ms.size(), 3u);
+  EXPECT_EQ(t.warmup, 2);
+  EXPECT_LE(t.minMs(), t.medianMs());
+  EXPECT_LE(t.medianMs(), t.maxMs());
+  std::vector<std::string> passes;
+  for (const auto& [name, ms] : t.pass_median_ms) {
+    passes.push_back(name);
+    EXPECT_GE(ms, 0.0) << name;
+  }
+  EXPECT_EQ(passes, (std::vector<std::string>{"eye", "wedges", "setup", "umbra", "penumbra",
+                                               "resolve", "shade"}));
+  ASSERT_EQ(frame.lights.size(), scene.lights.size());
+  EXPECT_EQ(frame.color.width(), 64);
+  EXPECT_THROW(timeFrames(renderer, 0, 1, frame), Error);
+  EXPECT_THROW(timeFrames(renderer, 1, -1, frame), Error);
+}
+
+TEST(FrameTiming, MedianOfEvenAndOddCounts) {
+  EXPECT_EQ(medianOf({}), 0.0);
+  EXPECT_EQ(medianOf({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_EQ(medianOf({4.0, 1.0, 3.0, 2.0}), 2.5);
+}
+
+using testing::CliRun;
+class FrameTimingCli : public testing::CliTest {};
+
+// The line users read: the frame count, the warm-up, min / median / max and per-pass medians,
+// after the usual summary; the image of the last frame is written.
+TEST_F(FrameTimingCli, RenderFramesPrintsWarmTimings) {
+  const CliRun r = run("render spheres --width 64 --height 48 --frames 3 --warmup 1 -o '" +
+                       path("s.png") + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::regex line(
+      R"(3 warm frames \(1 warm-up\): min [0-9.]+, median [0-9.]+, max [0-9.]+ ms; median per pass: eye [0-9.]+, .*shade [0-9.]+ ms)");
+  EXPECT_TRUE(std::regex_search(r.out, line)) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(path("s.png")));
+  EXPECT_NE(run("render spheres --frames 0 --quiet").exit_code, 0);
+}
+
+}  // namespace
+}  // namespace penumbra
