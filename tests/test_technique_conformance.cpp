@@ -194,6 +194,13 @@ TEST_P(TechniqueConformance, RejectsBadOptionsWithAMessage) {
       case OptionKind::Choice:
         expectRefused(spec.name, "bogus");
         break;
+      case OptionKind::Number:
+        for (const char* text : {"", "abc", "nan", "NaN", "inf", "-inf", "1e999", "0x1p3", " 1",
+                                 "+1", "1.5x", ".", "1e"})
+          expectRefused(spec.name, text);
+        expectRefused(spec.name, formatNumber(spec.number_min - 1.0 - std::fabs(spec.number_min)));
+        expectRefused(spec.name, formatNumber(spec.number_max + 1.0 + std::fabs(spec.number_max)));
+        break;
     }
   }
   EXPECT_NO_THROW(config.validate());

@@ -156,8 +156,8 @@ Subcommand addRenderCommand(CLI::App& app) {
       flag->option = cmd->add_flag("--" + use.spec->name, flag->given, help);
     } else {
       flag->option = cmd->add_option("--" + use.spec->name, flag->value, help);
-      flag->option->type_name(use.spec->kind == OptionKind::Integer
-                                  ? "INT"
+      flag->option->type_name(use.spec->kind == OptionKind::Integer  ? "INT"
+                              : use.spec->kind == OptionKind::Number ? "NUMBER"
                                   : fmt::format("{}", fmt::join(use.spec->choices, "|")));
     }
     flag->option->group("Technique options");

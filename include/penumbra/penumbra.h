@@ -49,6 +49,7 @@
 #include <penumbra/scene/scene.h>
 #include <penumbra/scene/scene_file.h>
 #include <penumbra/shadows/reference_options.h>
+#include <penumbra/shadows/shadow_map_options.h>
 #include <penumbra/shadows/technique.h>
 #include <penumbra/shadows/technique_options.h>
 #include <penumbra/shadows/volume_options.h>

@@ -101,6 +101,7 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
       case OptionKind::Flag: technique[key] = value == "true"; break;
       case OptionKind::Integer: technique[key] = std::stoll(value); break;
       case OptionKind::Choice: technique[key] = value; break;
+      case OptionKind::Number: technique[key] = std::stod(value); break;
     }
   }
   const json doc = {

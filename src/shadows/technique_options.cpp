@@ -1,6 +1,7 @@
 #include "shadows/technique_options.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@ std::string OptionSpec::usage() const {
     case OptionKind::Flag: return "--" + name;
     case OptionKind::Integer: return "--" + name + " N";
     case OptionKind::Choice: return fmt::format("--{} {}", name, fmt::join(choices, "|"));
+    case OptionKind::Number: return "--" + name + " X";
   }
   return "--" + name;
 }
@@ -29,6 +31,8 @@ void TechniqueOptionTable::validate(const std::any& options) const {
   for (const OptionSpec& s : specs_) {
     const std::string value = s.get(options);
     if (s.kind == OptionKind::Integer) parseInteger(value, s.min, s.max, "--" + s.name);
+    if (s.kind == OptionKind::Number)
+      parseNumber(value, s.number_min, s.number_max, "--" + s.name);
     PENUMBRA_CHECK(s.kind != OptionKind::Choice || value != "unknown",
                    "--{} holds a value that is none of {}", s.name, fmt::join(s.choices, ", "));
   }
@@ -49,6 +53,38 @@ int64_t parseInteger(const std::string& text, int64_t min, int64_t max, const st
                  "{} is {} but must be in {}..{}", what, text, min, max);
   return int64_t(value);
 }
+
+double parseNumber(const std::string& text, double min, double max, const std::string& what) {
+  // strtod alone accepts leading spaces, '+', "nan", "inf", hex and trailing junk: only digits,
+  // one optional leading '-', a '.', and an exponent (e/E, optional sign, digits) are a number.
+  bool ok = !text.empty();
+  size_t i = 0;
+  if (ok && text[i] == '-') ++i;
+  size_t mantissa_digits = 0;
+  while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i, ++mantissa_digits;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i, ++mantissa_digits;
+  }
+  ok = ok && mantissa_digits > 0;
+  if (ok && i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+    size_t exponent_digits = 0;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i, ++exponent_digits;
+    ok = exponent_digits > 0;
+  }
+  ok = ok && i == text.size();
+  PENUMBRA_CHECK(ok, "{} takes a number, not '{}'", what, text);
+  errno = 0;
+  const double value = std::strtod(text.c_str(), nullptr);
+  PENUMBRA_CHECK(errno != ERANGE && std::isfinite(value) && value >= min && value <= max,
+                 "{} is {} but must be in {}..{}", what, text, formatNumber(min),
+                 formatNumber(max));
+  return value;
+}
+
+std::string formatNumber(double value) { return fmt::format("{}", value); }
 
 bool parseFlag(const std::string& text, const std::string& what) {
   if (text == "true" || text == "on" || text == "1") return true;

@@ -3,6 +3,7 @@
 #include "shadows/technique_table.h"
 
 #include "shadows/reference/reference_technique.h"
+#include "shadows/shadowmap/shadow_map_technique.h"
 #include "shadows/volume/volume_technique.h"
 #include "shadows/wedge/wedge_technique.h"
 
@@ -14,6 +15,7 @@ std::vector<TechniqueInfo> builtinTechniques() {
       wedgeTechnique(WedgeAlgorithm::ThreePass),
       wedgeTechnique(WedgeAlgorithm::SinglePass),
       wedgeTechnique(WedgeAlgorithm::Original2002),
+      shadowMapTechnique(),
       referenceTechnique(),
   };
 }

@@ -22,6 +22,7 @@ enum class OptionKind {
   Flag,     // a switch: given alone on the command line; value "true" or "false"
   Integer,  // a whole number in [min, max]
   Choice,   // one of `choices`
+  Number,   // a finite real number in [number_min, number_max]
 };
 
 struct OptionSpec {
@@ -30,6 +31,7 @@ struct OptionSpec {
   OptionKind kind = OptionKind::Integer;
   std::vector<std::string> choices;  // Choice
   int64_t min = 0, max = 0;          // Integer
+  double number_min = 0, number_max = 0;  // Number
   // Sets the field from a command-line value: throws penumbra::Error saying what is wrong.
   std::function<void(std::any& options, const std::string& value)> set;
   std::function<std::string(const std::any& options)> get;  // the value, as set() takes it
@@ -64,6 +66,12 @@ class TechniqueOptionTable {
 // Parses a whole decimal number, nothing else on the line; throws penumbra::Error naming
 // `what` when the text is not one or lies outside [min, max].
 int64_t parseInteger(const std::string& text, int64_t min, int64_t max, const std::string& what);
+// Parses a whole finite decimal number ("0.5", "-2", "1e-3"; no spaces, no leading '+', no
+// nan, inf or hex), nothing else on the line; throws penumbra::Error naming `what` when the
+// text is not one or lies outside [min, max].
+double parseNumber(const std::string& text, double min, double max, const std::string& what);
+// The shortest text parseNumber reads back as exactly `value`.
+std::string formatNumber(double value);
 bool parseFlag(const std::string& text, const std::string& what);  // true/false, on/off, 1/0
 [[noreturn]] void throwUnknownOptionChoice(const std::string& what, const std::string& value,
                                            const std::vector<std::string>& choices);
@@ -122,6 +130,26 @@ class OptionTableBuilder {
         std::move(name), std::move(help), min, max,
         [field](Options& o, int64_t v) { o.*field = Int(v); },
         [field](const Options& o) { return int64_t(o.*field); });
+  }
+
+  // A real number in [min, max] (a bias in texels, say).
+  OptionTableBuilder& number(std::string name, std::string help, double Options::*field,
+                             double min, double max) {
+    OptionSpec s;
+    s.name = std::move(name);
+    s.help = std::move(help);
+    s.kind = OptionKind::Number;
+    s.number_min = min;
+    s.number_max = max;
+    const std::string what = "--" + s.name;
+    s.set = [field, min, max, what](std::any& a, const std::string& v) {
+      std::any_cast<Options&>(a).*field = parseNumber(v, min, max, what);
+    };
+    s.get = [field](const std::any& a) {
+      return formatNumber(std::any_cast<const Options&>(a).*field);
+    };
+    table_.specs_.push_back(std::move(s));
+    return *this;
   }
 
   template <class Enum>
