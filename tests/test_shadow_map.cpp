@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "eye_frame_util.h"
 #include "metrics/shadow_boundary.h"
-#include "render/eye_pass.h"
 #include "scene/builtin_scenes.h"
 #include "scene/generators.h"
 #include "scene/scene_builder.h"
@@ -20,19 +20,10 @@
 namespace penumbra {
 namespace {
 
-struct Frame {
-  Scene scene;
-  View view;
-  EyeBuffers eye;
-};
+using Frame = testing::EyeFrame;
 
 Frame makeFrame(Scene scene, int width, int height) {
-  Frame f;
-  f.scene = std::move(scene);
-  f.view = f.scene.camera.makeView(width, height);
-  Stats stats;
-  f.eye = renderEyePass(f.scene, f.view, stats);
-  return f;
+  return testing::makeEyeFrame(std::move(scene), width, height);
 }
 
 TechniqueConfig shadowMap(int resolution, int kernel) {

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/parallel.h"
+#include "eye_frame_util.h"
 #include "metrics/shadow_boundary.h"
-#include "render/eye_pass.h"
 #include "scene/builtin_scenes.h"
 #include "scene/generators.h"
 #include "scene/scene_builder.h"
@@ -60,19 +60,10 @@ const bool all_lit_registered = (registerTechnique(allLitTechnique()), true);
 
 constexpr int kWidth = 160, kHeight = 107;
 
-struct Frame {
-  Scene scene;
-  View view;
-  EyeBuffers eye;
-};
+using Frame = testing::EyeFrame;
 
 Frame makeFrame(Scene scene, int width = kWidth, int height = kHeight) {
-  Frame f;
-  f.scene = std::move(scene);
-  f.view = f.scene.camera.makeView(width, height);
-  Stats stats;
-  f.eye = renderEyePass(f.scene, f.view, stats);
-  return f;
+  return testing::makeEyeFrame(std::move(scene), width, height);
 }
 
 struct LightsResult {
