@@ -110,6 +110,10 @@ std::string configKey(const DigestConfig& c) {
 // by the CPU it runs on (SSE, AVX2, AVX-512): another machine may decide a grazing ray the other
 // way, so its bits are not a property of our code. Its counters are (rays are counted before
 // Embree sees them), and so is its mean up to a few such rays.
+// Everything else is our own arithmetic (no -march, no FP contraction, SIMD kernels equal to
+// their scalar twins), so its bits are the same on every x86-64 machine, with one assumption:
+// glibc picks FMA variants of some libm functions (sin, cos: the generators) by CPU, and every
+// machine these tests have run on has FMA. A mismatch on a machine without it points here.
 bool visibilityIsExact(const DigestConfig& c) { return c.technique != "reference"; }
 
 // The configurations of one scene. Built-in scenes get full culling at every tile size, scene
