@@ -19,6 +19,7 @@
 #include "shadows/wedge/wedge_technique.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge_frame.h"
+#include "eye_frame_util.h"
 #include "shadow_test_util.h"
 
 namespace penumbra {
@@ -28,19 +29,10 @@ constexpr WedgeAlgorithm kWedgeKinds[] = {WedgeAlgorithm::Original2002, WedgeAlg
                                            WedgeAlgorithm::SinglePass};
 constexpr WedgeAlgorithm kRestructured[] = {WedgeAlgorithm::ThreePass, WedgeAlgorithm::SinglePass};
 
-struct Frame {
-  Scene scene;
-  View view;
-  EyeBuffers eye;
-};
+using Frame = testing::EyeFrame;
 
 Frame makeFrame(Scene scene, int width = 320, int height = 214, bool simd = true) {
-  Frame f;
-  f.scene = std::move(scene);
-  f.view = f.scene.camera.makeView(width, height);
-  Stats stats;
-  f.eye = renderEyePass(f.scene, f.view, stats, simd);
-  return f;
+  return testing::makeEyeFrame(std::move(scene), width, height, simd);
 }
 
 WedgeOptions options(VolumeMode mode = VolumeMode::Auto) {
