@@ -26,6 +26,7 @@ namespace {
 // registered techniques, applied to the chosen technique only when given.
 struct TechniqueFlag {
   std::string name;
+  OptionKind kind = OptionKind::Flag;
   CLI::Option* option = nullptr;
   std::string value;  // Integer and Choice options
   bool given = false;  // Flag options
@@ -77,8 +78,7 @@ int runRender(const RenderArgs& args) {
   // (TechniqueConfig::set names the technique's own options), never silently ignored.
   for (const auto& flag : args.technique_flags) {
     if (flag->option->count() == 0) continue;
-    const OptionKind kind = techniqueOptionKind(flag->name);
-    options.technique.set(flag->name, kind == OptionKind::Flag ? "true" : flag->value);
+    options.technique.set(flag->name, flag->kind == OptionKind::Flag ? "true" : flag->value);
   }
   options.technique.validate();
   options.context.simd = !args.scalar;
@@ -151,6 +151,7 @@ Subcommand addRenderCommand(CLI::App& app) {
   for (const TechniqueOptionUse& use : techniqueOptionUses()) {
     auto flag = std::make_unique<TechniqueFlag>();
     flag->name = use.spec->name;
+    flag->kind = use.spec->kind;
     const std::string help = fmt::format("{} [{}]", use.spec->help, fmt::join(use.techniques, ", "));
     if (use.spec->kind == OptionKind::Flag) {
       flag->option = cmd->add_flag("--" + use.spec->name, flag->given, help);

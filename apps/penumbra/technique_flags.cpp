@@ -26,10 +26,4 @@ std::vector<TechniqueOptionUse> techniqueOptionUses() {
   return uses;
 }
 
-OptionKind techniqueOptionKind(const std::string& name) {
-  for (const TechniqueOptionUse& use : techniqueOptionUses())
-    if (use.spec->name == name) return use.spec->kind;
-  throw Error(fmt::format("no technique has an option --{}", name));
-}
-
 }  // namespace penumbra::cli

@@ -16,6 +16,5 @@ struct TechniqueOptionUse {
 // Throws penumbra::Error when two techniques give one name different kinds (a flag and a
 // value), which one command-line option could not serve.
 std::vector<TechniqueOptionUse> techniqueOptionUses();
-OptionKind techniqueOptionKind(const std::string& name);
 
 }  // namespace penumbra::cli

@@ -86,10 +86,7 @@ class OptionTableBuilder {
   // A switch that sets `field` to `when_given` (e.g. --one-level-stencil clears two_level).
   OptionTableBuilder& flag(std::string name, std::string help, bool Options::*field,
                            bool when_given = true) {
-    OptionSpec s;
-    s.name = std::move(name);
-    s.help = std::move(help);
-    s.kind = OptionKind::Flag;
+    OptionSpec& s = add(std::move(name), std::move(help), OptionKind::Flag);
     const std::string what = "--" + s.name;
     s.set = [field, when_given, what](std::any& a, const std::string& v) {
       std::any_cast<Options&>(a).*field = parseFlag(v, what) ? when_given : !when_given;
@@ -97,7 +94,6 @@ class OptionTableBuilder {
     s.get = [field, when_given](const std::any& a) {
       return std::any_cast<const Options&>(a).*field == when_given ? "true" : "false";
     };
-    table_.specs_.push_back(std::move(s));
     return *this;
   }
 
@@ -106,10 +102,7 @@ class OptionTableBuilder {
   OptionTableBuilder& integer(std::string name, std::string help, int64_t min, int64_t max,
                               std::function<void(Options&, int64_t)> set,
                               std::function<int64_t(const Options&)> get) {
-    OptionSpec s;
-    s.name = std::move(name);
-    s.help = std::move(help);
-    s.kind = OptionKind::Integer;
+    OptionSpec& s = add(std::move(name), std::move(help), OptionKind::Integer);
     s.min = min;
     s.max = max;
     const std::string what = "--" + s.name;
@@ -119,7 +112,6 @@ class OptionTableBuilder {
     s.get = [get](const std::any& a) {
       return std::to_string(get(std::any_cast<const Options&>(a)));
     };
-    table_.specs_.push_back(std::move(s));
     return *this;
   }
 
@@ -135,10 +127,7 @@ class OptionTableBuilder {
   // A real number in [min, max] (a bias in texels, say).
   OptionTableBuilder& number(std::string name, std::string help, double Options::*field,
                              double min, double max) {
-    OptionSpec s;
-    s.name = std::move(name);
-    s.help = std::move(help);
-    s.kind = OptionKind::Number;
+    OptionSpec& s = add(std::move(name), std::move(help), OptionKind::Number);
     s.number_min = min;
     s.number_max = max;
     const std::string what = "--" + s.name;
@@ -148,17 +137,13 @@ class OptionTableBuilder {
     s.get = [field](const std::any& a) {
       return formatNumber(std::any_cast<const Options&>(a).*field);
     };
-    table_.specs_.push_back(std::move(s));
     return *this;
   }
 
   template <class Enum>
   OptionTableBuilder& choice(std::string name, std::string help, Enum Options::*field,
                              std::vector<std::pair<std::string, Enum>> values) {
-    OptionSpec s;
-    s.name = std::move(name);
-    s.help = std::move(help);
-    s.kind = OptionKind::Choice;
+    OptionSpec& s = add(std::move(name), std::move(help), OptionKind::Choice);
     for (const auto& [text, value] : values) s.choices.push_back(text);
     const std::string what = "--" + s.name;
     const std::vector<std::string> choices = s.choices;
@@ -175,7 +160,6 @@ class OptionTableBuilder {
         if (std::any_cast<const Options&>(a).*field == value) return text;
       return std::string("unknown");
     };
-    table_.specs_.push_back(std::move(s));
     return *this;
   }
 
@@ -191,6 +175,14 @@ class OptionTableBuilder {
   TechniqueOptionTable build() { return std::move(table_); }
 
  private:
+  // A new spec with its name, help and kind; the caller fills in the rest.
+  OptionSpec& add(std::string name, std::string help, OptionKind kind) {
+    OptionSpec& s = table_.specs_.emplace_back();
+    s.name = std::move(name);
+    s.help = std::move(help);
+    s.kind = kind;
+    return s;
+  }
   TechniqueOptionTable table_;
 };
 
