@@ -25,6 +25,7 @@ struct CompareArgs {
   double tolerance = 0.01;
   std::string diff;
   std::optional<float> diff_scale;
+  std::string mask;  // a depth EXR (render --depth): only pixels showing geometry
   bool json = false;
 };
 
@@ -51,10 +52,20 @@ int runCompare(const CompareArgs& args) {
                  "cannot compare '{}' ({}x{}) with '{}' ({}x{}): the sizes differ", args.a,
                  a.width(), a.height(), args.b, b.width(), b.height());
 
+  std::optional<Image<uint8_t>> mask;
+  if (!args.mask.empty()) {
+    const Image<float> depth = readExr(args.mask);
+    PENUMBRA_CHECK(depth.width() == a.width() && depth.height() == a.height(),
+                   "--mask '{}' is {}x{} but the images are {}x{}", args.mask, depth.width(),
+                   depth.height(), a.width(), a.height());
+    mask.emplace(depth.width(), depth.height(), uint8_t(0));
+    for (size_t i = 0; i < depth.size(); ++i) (*mask)[i] = depth[i] > 0.0f ? 1 : 0;
+  }
+  const Image<uint8_t>* covered = mask ? &*mask : nullptr;
   // Gray against gray stays gray (visibility); anything with colour compares as linear RGB.
   const bool gray = !a.is_color && !b.is_color;
-  const ImageDifference d = gray ? compareImages(a.gray, b.gray, args.tolerance)
-                                 : compareImages(asColor(a), asColor(b), args.tolerance);
+  const ImageDifference d = gray ? compareImages(a.gray, b.gray, args.tolerance, covered)
+                                 : compareImages(asColor(a), asColor(b), args.tolerance, covered);
 
   float scale = 1.0f;
   if (!args.diff.empty()) {
@@ -114,6 +125,8 @@ Subcommand addCompareCommand(CLI::App& app) {
   cmd->add_option("--diff", args->diff, "Write a heat map of the error (PNG)");
   cmd->add_option("--diff-scale", args->diff_scale,
                   "Error shown brightest in the heat map (default: the largest error)");
+  cmd->add_option("--mask", args->mask,
+                  "Compare only the pixels that show geometry in this depth EXR (render --depth)");
   cmd->add_flag("--json", args->json, "Print the result as JSON");
   return {cmd, [args] { return runCompare(*args); }};
 }

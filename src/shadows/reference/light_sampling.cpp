@@ -117,4 +117,6 @@ void stratifiedSamples(int n, uint64_t seed, uint32_t x, uint32_t y, vec2* out) 
   }
 }
 
+void fixedSamples(int n, uint64_t seed, vec2* out) { stratifiedSamples(n, seed, 0, 0, out); }
+
 }  // namespace penumbra

@@ -76,4 +76,8 @@ ConeSample sampleSphereCone(const SphereCone& cone, const DiskPoint& disk_point)
 // cell of strataGrid(n), cells in row-major order.
 void stratifiedSamples(int n, uint64_t seed, uint32_t x, uint32_t y, vec2* out);
 
+// The one set of n samples every pixel shares in SampleSet::Fixed (reference_options.h) and in
+// the exact soft shadow volumes: pixel (0, 0)'s stratified set for `seed`.
+void fixedSamples(int n, uint64_t seed, vec2* out);
+
 }  // namespace penumbra

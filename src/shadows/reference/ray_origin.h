@@ -25,6 +25,12 @@ struct RayStart {
   }
 };
 
+// How far, in pixel footprints (distance to the eye times the pixel angle at the image centre),
+// an origin can lie from its pixel's depth-buffer point: the snap onto the visible triangle is
+// at most 1 (ray_origin.cpp), the lift off it is float rounding, the fallback step 0.125. For
+// techniques that cull by the depth buffer and then shade the oracle's points.
+inline constexpr double kMaxOriginOffsetFootprints = 1.25;
+
 class RayOrigins {
  public:
   RayOrigins(const Scene& scene, const View& view);

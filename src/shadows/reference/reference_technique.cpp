@@ -130,6 +130,8 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
     }
 
     std::vector<vec2> samples(static_cast<size_t>(n));
+    const bool fixed = options.samples == SampleSet::Fixed;
+    if (fixed) fixedSamples(n, options.seed, samples.data());
     rays.resize(size_t(n));
     blocked.resize(size_t(n));
     for (int x = 0; x < width; ++x) {
@@ -140,7 +142,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
       // A point inside the light sees all of it.
       if (glm::length(center - start.origin) <= radius) continue;
       const SphereCone cone = makeSphereCone(start.origin, center, radius);
-      stratifiedSamples(n, options.seed, uint32_t(x), uint32_t(y), samples.data());
+      if (!fixed) stratifiedSamples(n, options.seed, uint32_t(x), uint32_t(y), samples.data());
       const vec3 origin(start.origin);
       size_t traced = 0;
       for (int k = 0; k < n; ++k) {
@@ -187,8 +189,16 @@ TechniqueInfo referenceTechnique() {
                            &ReferenceOptions::hard)
                      .integer("seed", "random seed of the ray directions",
                               &ReferenceOptions::seed, 0, INT64_MAX)
+                     .choice("sample-set",
+                             "light samples: jittered per pixel (pixel), or one set for every "
+                             "pixel (fixed: the set `exact` counts, for sample-by-sample "
+                             "comparison)",
+                             &ReferenceOptions::samples,
+                             {{"pixel", SampleSet::PerPixel}, {"fixed", SampleSet::Fixed}})
                      .describe([](const ReferenceOptions& o) {
-                       return o.hard ? std::string("hard") : fmt::format("{} rays", o.rays);
+                       return o.hard ? std::string("hard")
+                                     : fmt::format("{} rays{}", o.rays,
+                                                   o.samples == SampleSet::Fixed ? ", fixed" : "");
                      })
                      .build();
   info.prepare = [](const std::any& options, const Scene& scene) {

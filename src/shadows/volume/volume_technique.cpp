@@ -12,31 +12,11 @@
 #include "shadows/volume/volume_technique.h"
 
 #include "core/timer.h"
-#include "raster/rasterizer.h"
 #include "shadows/facing_away.h"
+#include "shadows/volume/shadow_stencil.h"
 
 namespace penumbra {
 namespace {
-
-// Side quads of every silhouette edge, extruded from the light centre to infinity, and with
-// z-fail the caps. Payloads are signed weights of polygons facing out of the volume
-// (rasterizer.h, rasterizeStencil).
-void appendVolumePolygons(const Mesh& mesh, const vec3& centre, const View& view,
-                          CasterVolume& volume, ClipTriangles& out) {
-  appendExtrudedVertices(mesh, centre, view, volume, out);
-  const uint32_t finite = volume.finite, infinite = volume.infinite;
-  const uint8_t flags = volume.zfail ? kZFail : 0;
-  for (const SilhouetteEdge& e : volume.silhouette.edges) {
-    // Quad (v1, v0, v0', v1') as two triangles sharing the diagonal v1-v0'.
-    out.add(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags);
-    out.add(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags);
-  }
-  // z-pass: caps are never in front of a visible point (see above).
-  if (!volume.zfail) return;
-  forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
-    out.add(a, b, c, weight, flags);
-  });
-}
 
 class ShadowVolumes final : public PreparedTechnique {
  public:
@@ -47,24 +27,12 @@ class ShadowVolumes final : public PreparedTechnique {
                          const RenderContext& context) const override {
     TechniqueResult result;
     Stats& stats = result.stats;
-    ClipTriangles polygons(eye.clip_vertices);
-    {
-      PassTimer timer(stats, "silhouette");
-      for (size_t m = 0; m < scene_.meshes.size(); ++m) {
-        CasterVolume volume = casterVolume(scene_, m, eye, light.center, view, options_.mode,
-                                           CasterPolicy::Auto);
-        stats.silhouette_edges += volume.silhouette.edges.size();
-        appendVolumePolygons(scene_.meshes[m], light.center, view, volume, polygons);
-      }
-    }
-    Image<int32_t> stencil(view.width, view.height, 0);
-    {
-      PassTimer timer(stats, "volumes");
-      StencilOptions stencil_options;
-      stencil_options.simd = context.simd;
-      stencil_options.two_level = options_.two_level_stencil;
-      rasterizeStencil(polygons, eye.depth, stencil, stats, stencil_options);
-    }
+    ShadowStencilOptions stencil_options;
+    stencil_options.mode = options_.mode;
+    stencil_options.two_level_stencil = options_.two_level_stencil;
+    stencil_options.simd = context.simd;
+    const Image<int32_t> stencil =
+        shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
     {
       PassTimer timer(stats, "resolve");
       resolveVisibility(scene_, light, view, eye, result.visibility,

@@ -1,0 +1,382 @@
+#include "shadows/exact/potential_edges.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/parallel.h"
+
+namespace penumbra {
+namespace {
+
+constexpr size_t kChunk = 2048;  // edges per work item
+
+// Relative slack of the "plane cuts the ball" and "silhouette from the centre" tests: an edge
+// kept needlessly costs a little time, an edge missed is a wrong pixel.
+constexpr double kSlack = 1e-6;
+
+int sign(double v) { return (v > 0.0) - (v < 0.0); }
+
+}  // namespace
+
+PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
+  const dvec3 c(light.center);
+  const double r = light.radius;
+  PotentialEdges out;
+  uint32_t first_id = 0;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    const EdgeAdjacency& adjacency = scene.adjacency[m];
+    out.scene_edges += adjacency.edges.size();
+    // Planes of the mesh's triangles, once (an edge asks for two of them).
+    std::vector<dvec4> planes(mesh.triangleCount());
+    parallelFor((mesh.triangleCount() + kChunk - 1) / kChunk, [&](size_t chunk) {
+      const size_t end = std::min(mesh.triangleCount(), (chunk + 1) * kChunk);
+      for (size_t t = chunk * kChunk; t < end; ++t) {
+        const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), v(mesh.vertex(t, 2));
+        const dvec3 n = glm::cross(b - a, v - a);
+        const double length = glm::length(n);
+        planes[t] = length > 0.0 && std::isfinite(length)
+                        ? dvec4(n / length, -glm::dot(n / length, a))
+                        : dvec4(0.0);
+      }
+    });
+    const size_t edge_count = adjacency.edges.size();
+    const size_t chunks = (edge_count + kChunk - 1) / kChunk;
+    std::vector<PotentialEdges> parts(chunks);
+    parallelFor(chunks, [&](size_t chunk) {
+      PotentialEdges& part = parts[chunk];
+      const size_t end = std::min(edge_count, (chunk + 1) * kChunk);
+      for (size_t i = chunk * kChunk; i < end; ++i) {
+        const Edge& edge = adjacency.edges[i];
+        const dvec3 a(mesh.positions[edge.v0]), b(mesh.positions[edge.v1]);
+        const double scale = glm::length(a - c) + glm::length(b - c) + r;
+        const size_t first = part.triangles.size();
+        int cutting = 0, centre_sides = 0;
+        for (uint32_t u = 0; u < edge.use_count; ++u) {
+          const uint32_t t = adjacency.uses[edge.first_use + u].triangle;
+          const dvec4& plane = planes[t];
+          if (plane == dvec4(0.0)) continue;  // zero area: blocks no ray
+          dvec3 opposite(0.0);
+          for (int k = 0; k < 3; ++k) {
+            const uint32_t v = mesh.indices[t * 3 + size_t(k)];
+            if (v != edge.v0 && v != edge.v1) opposite = dvec3(mesh.positions[v]);
+          }
+          const dvec3 normal(plane);
+          const double at_centre = glm::dot(normal, c) + plane.w;
+          if (std::fabs(at_centre) <= r * (1.0 + kSlack) + kSlack * 1e-3 * scale) ++cutting;
+          // Side of the triangle seen from the centre (EdgeTriangle).
+          const int8_t winding =
+              glm::dot(normal, glm::cross(b - a, opposite - a)) >= 0.0 ? int8_t(1) : int8_t(-1);
+          centre_sides -= winding * sign(at_centre);
+          part.triangles.push_back(
+              EdgeTriangle{first_id + t, at_centre > 0.0, winding, normal, plane.w});
+        }
+        const size_t count = part.triangles.size() - first;
+        if (count == 0) continue;
+        // Two triangles on opposite sides seen from the centre, and neither plane near the
+        // light: never a silhouette from any point of it.
+        const bool potential = count != 2 || cutting > 0 || centre_sides != 0;
+        if (!potential) {
+          part.triangles.resize(first);
+          continue;
+        }
+        part.edges.push_back(PotentialEdge{a, b, uint32_t(first), uint32_t(count)});
+      }
+    });
+    for (PotentialEdges& part : parts) {
+      const uint32_t base = uint32_t(out.triangles.size());
+      for (PotentialEdge e : part.edges) {
+        e.first_triangle += base;
+        out.edges.push_back(e);
+      }
+      out.triangles.insert(out.triangles.end(), part.triangles.begin(), part.triangles.end());
+    }
+    first_id += uint32_t(mesh.triangleCount());
+  }
+  return out;
+}
+
+namespace {
+
+// A world plane as a function of screen position and reversed-Z depth, E = value / w
+// (wedge_screen.h, toScreenPlane), in double.
+struct ScreenPlaneD {
+  double a, b, c, d;
+};
+
+// Triangles of an edge whose signs the tile test looks at; an edge with more is not culled by
+// its silhouette.
+constexpr int kMaxTileTriangles = 4;
+
+struct Region {
+  std::array<ScreenPlaneD, 4> planes;
+  int plane_count = 0;
+  // The edge's triangles' planes, for the silhouette test (EdgeTriangle); triangle_count 0
+  // when there are more than kMaxTileTriangles.
+  std::array<ScreenPlaneD, kMaxTileTriangles> triangles;
+  std::array<const EdgeTriangle*, kMaxTileTriangles> triangle;
+  int triangle_count = 0;
+  int tx0 = 0, ty0 = 0, tx1 = -1, ty1 = -1;  // tiles of the screen box, inclusive
+};
+
+class RegionBuilder {
+ public:
+  RegionBuilder(const Light& light, const View& view, int level)
+      : c_(light.center), r_(light.radius), width_(view.width), height_(view.height),
+        level_(level), near_(0.5 * double(view.near_plane)) {
+    vp_ = dmat4(view.view_projection);
+    plane_to_clip_ = glm::transpose(glm::inverse(vp_));
+  }
+
+  Region region(const PotentialEdge& e, const EdgeTriangle* triangles) const {
+    Region region;
+    if (e.triangle_count <= uint32_t(kMaxTileTriangles)) {
+      for (uint32_t k = 0; k < e.triangle_count; ++k) {
+        const EdgeTriangle& t = triangles[e.first_triangle + k];
+        region.triangles[k] = screenPlane(t.normal, t.offset);
+        region.triangle[k] = &t;
+      }
+      region.triangle_count = int(e.triangle_count);
+    }
+    const dvec3 a = e.a, b = e.b;
+    const dvec3 u = glm::normalize(b - a);
+    // The two planes through the edge's line tangent to the ball: seen along the edge, the
+    // region is the cone of rays from the edge away from the light's disk.
+    const dvec3 ca = c_ - a;
+    const dvec3 c_perp = ca - glm::dot(ca, u) * u;
+    const double h = glm::length(c_perp);
+    if (h > r_ * (1.0 + 1e-9)) {
+      const dvec3 e1 = c_perp / h, e2 = glm::cross(u, e1);
+      const double sin_beta = r_ / h, cos_beta = std::sqrt(1.0 - sin_beta * sin_beta);
+      add(region, -sin_beta * e1 + cos_beta * e2, a);
+      add(region, -sin_beta * e1 - cos_beta * e2, a);
+    }
+    // At each end a plane with the edge on its inner side and the ball on its outer side: the
+    // shadow cone of the end point then lies inside, and so do the rays through every other
+    // point of the edge (docs/exact-soft-shadows.md).
+    endPlane(region, a, u);
+    endPlane(region, b, -u);
+    screenBox(region, e);
+    return region;
+  }
+
+  // True when no point of the tile's box (pixel centres [x0, x1] x [y0, y1], reversed-Z depth
+  // [z0, z1]), nor any point `margin` (in plane value over w) off one, can lie inside the
+  // region, or every such point sees the edge as no silhouette: each of its triangles' planes
+  // has one sign over the box and the signs cancel (exact_technique.cpp, the weight). A point
+  // on one of the triangles is on its plane, so the visible triangle, which the pixels leave
+  // out of the weight, never has a sign here.
+  static bool culled(const Region& region, double x0, double x1, double y0, double y1, double z0,
+                     double z1, double margin) {
+    for (int i = 0; i < region.plane_count; ++i) {
+      if (planeMax(region.planes[size_t(i)], x0, x1, y0, y1, z0, z1) < -margin) return true;
+    }
+    if (region.triangle_count == 0) return false;
+    int weight = 0;
+    for (int k = 0; k < region.triangle_count; ++k) {
+      const ScreenPlaneD& p = region.triangles[size_t(k)];
+      int sign;
+      if (-planeMax(negated(p), x0, x1, y0, y1, z0, z1) > margin) {
+        sign = 1;
+      } else if (planeMax(p, x0, x1, y0, y1, z0, z1) < -margin) {
+        sign = -1;
+      } else {
+        return false;
+      }
+      const EdgeTriangle& t = *region.triangle[size_t(k)];
+      if ((sign > 0) == t.light_above) continue;
+      weight -= t.winding * sign;
+    }
+    return weight == 0;
+  }
+
+ private:
+  // Largest value over the box, at the corner the gradient points to, less the rounding of
+  // the double evaluation.
+  static double planeMax(const ScreenPlaneD& p, double x0, double x1, double y0, double y1,
+                         double z0, double z1) {
+    const double x = p.a >= 0 ? x1 : x0, y = p.b >= 0 ? y1 : y0, z = p.c >= 0 ? z1 : z0;
+    const double value = p.a * x + p.b * y + p.c * z + p.d;
+    const double scale =
+        std::fabs(p.a * x) + std::fabs(p.b * y) + std::fabs(p.c * z) + std::fabs(p.d);
+    return value + 1e-9 * scale;
+  }
+  static ScreenPlaneD negated(const ScreenPlaneD& p) { return {-p.a, -p.b, -p.c, -p.d}; }
+
+  ScreenPlaneD screenPlane(const dvec3& n, double offset) const {
+    const dvec4 q = plane_to_clip_ * dvec4(n, offset);
+    return ScreenPlaneD{2.0 * q.x / width_, -2.0 * q.y / height_, q.z, q.w - q.x + q.y};
+  }
+  void add(Region& region, const dvec3& n, const dvec3& through) const {
+    region.planes[size_t(region.plane_count++)] = screenPlane(n, -glm::dot(n, through));
+  }
+
+  void endPlane(Region& region, const dvec3& end, const dvec3& inward) const {
+    const dvec3 away = end - c_;
+    const double distance = glm::length(away);
+    if (!(distance > r_ * (1.0 + 1e-9))) return;
+    const dvec3 w = away / distance;
+    const double sin_alpha = r_ / distance, cos_alpha = std::sqrt(1.0 - sin_alpha * sin_alpha);
+    // Need dot(n, inward) >= 0 and dot(n, w) >= sin_alpha (the end's shadow cone inside).
+    if (glm::dot(inward, w) >= sin_alpha) {
+      add(region, inward, end);
+      return;
+    }
+    const dvec3 v = inward - glm::dot(inward, w) * w;
+    const double v_length = glm::length(v);
+    if (!(v_length > 1e-12)) return;
+    const dvec3 n = sin_alpha * w + cos_alpha * (v / v_length);
+    if (glm::dot(n, inward) >= 0.0) add(region, n, end);
+  }
+
+  // The screen box of the region's part in front of the eye: the region lies in the convex
+  // hull of the edge's end points and the shadow cones of both ends (a point x + t (x - q) of
+  // the edge's shadow is the same blend of a's and b's), each cone inside a square pyramid of
+  // four directions. Vertices of the hull cut at w = near are the end points in front of it and
+  // the crossings of its edges with it; directions away from the eye add their vanishing
+  // points. A cone with directions both toward and away from the eye reaches the screen's
+  // border, so the box is the whole screen then.
+  void screenBox(Region& region, const PotentialEdge& e) const {
+    const dvec4 points[2] = {vp_ * dvec4(e.a, 1.0), vp_ * dvec4(e.b, 1.0)};
+    dvec4 directions[8];
+    bool full = false;
+    for (int k = 0; k < 2 && !full; ++k) {
+      const dvec3 end = k == 0 ? e.a : e.b;
+      const dvec3 away = end - c_;
+      const double distance = glm::length(away);
+      if (!(distance > r_ * (1.0 + 1e-9))) {
+        full = true;
+        break;
+      }
+      const dvec3 w = away / distance;
+      const double sin_alpha = r_ / distance;
+      const double tan_alpha = sin_alpha / std::sqrt(1.0 - sin_alpha * sin_alpha);
+      const dvec3 helper = std::fabs(w.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+      const dvec3 t1 = glm::normalize(glm::cross(w, helper)), t2 = glm::cross(w, t1);
+      // A little wider than the circumscribed pyramid, for rounding.
+      const double spread = tan_alpha * (1.0 + 1e-6) + 1e-9;
+      for (int s = 0; s < 4; ++s) {
+        const dvec3 d = w + spread * ((s & 1 ? 1.0 : -1.0) * t1 + (s & 2 ? 1.0 : -1.0) * t2);
+        directions[k * 4 + s] = vp_ * dvec4(d, 0.0);
+      }
+    }
+    int positive = 0, negative = 0;
+    if (!full) {
+      for (const dvec4& d : directions) {
+        positive += d.w > 0.0;
+        negative += d.w < 0.0;
+      }
+      full = positive != 8 && negative != 8;
+    }
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    auto extend = [&](const dvec4& clip) {
+      const double x = clip.x / clip.w, y = clip.y / clip.w;
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
+    };
+    auto crossing = [&](const dvec4& from, const dvec4& step) {
+      // from + t step at w = near, for t >= 0 (t <= 1 for a segment, checked by the caller).
+      const double t = (near_ - from.w) / step.w;
+      extend(from + t * step);
+    };
+    if (!full) {
+      for (const dvec4& p : points) {
+        if (p.w >= near_) extend(p);
+        for (const dvec4& d : directions) {
+          if ((p.w < near_ && d.w > 0.0) || (p.w > near_ && d.w < 0.0)) crossing(p, d);
+        }
+      }
+      if ((points[0].w < near_) != (points[1].w < near_)) crossing(points[0], points[1] - points[0]);
+      if (positive == 8)
+        for (const dvec4& d : directions) extend(d);
+      if (x0 > x1) return;  // nothing in front of the eye
+    }
+    const int tile = 1 << level_;
+    const int columns = (width_ + tile - 1) / tile, rows = (height_ + tile - 1) / tile;
+    if (full) {
+      region.tx0 = region.ty0 = 0;
+      region.tx1 = columns - 1;
+      region.ty1 = rows - 1;
+      return;
+    }
+    // NDC to pixels (y down), one pixel of slack, clamped before the conversion to int.
+    const double px0 = (x0 + 1.0) * 0.5 * width_ - 1.0, px1 = (x1 + 1.0) * 0.5 * width_ + 1.0;
+    const double py0 = (1.0 - y1) * 0.5 * height_ - 1.0, py1 = (1.0 - y0) * 0.5 * height_ + 1.0;
+    if (px1 < 0.0 || py1 < 0.0 || px0 >= width_ || py0 >= height_) return;
+    region.tx0 = int(std::max(0.0, px0)) / tile;
+    region.ty0 = int(std::max(0.0, py0)) / tile;
+    region.tx1 = std::min(int(std::min(px1, double(width_ - 1))) / tile, columns - 1);
+    region.ty1 = std::min(int(std::min(py1, double(height_ - 1))) / tile, rows - 1);
+  }
+
+  dvec3 c_;
+  double r_;
+  int width_, height_, level_;
+  double near_;
+  dmat4 vp_, plane_to_clip_;
+};
+
+}  // namespace
+
+EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
+                  const DepthBuffer& depth, int level, double margin_footprints) {
+  EdgeBins bins;
+  bins.level = level;
+  const int tile = 1 << level;
+  bins.columns = (view.width + tile - 1) / tile;
+  bins.rows = (view.height + tile - 1) / tile;
+  const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
+  const TileDepthRange& range = depth.tileRange(level);
+  // A point d world units off its depth-buffer point changes a plane value by at most d, and
+  // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
+  const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
+  const double margin = margin_footprints * pixel_angle;
+  const RegionBuilder builder(light, view, level);
+
+  struct Part {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, edge)
+    uint64_t tested = 0, culled = 0;
+  };
+  const size_t chunks = (edges.edges.size() + kChunk - 1) / kChunk;
+  std::vector<Part> parts(chunks);
+  parallelFor(chunks, [&](size_t chunk) {
+    Part& part = parts[chunk];
+    const size_t end = std::min(edges.edges.size(), (chunk + 1) * kChunk);
+    for (size_t i = chunk * kChunk; i < end; ++i) {
+      const Region region = builder.region(edges.edges[i], edges.triangles.data());
+      for (int ty = region.ty0; ty <= region.ty1; ++ty) {
+        for (int tx = region.tx0; tx <= region.tx1; ++tx) {
+          const float zmax = range.zmax.at(tx, ty);
+          if (!(zmax > 0.0f)) continue;  // background only
+          ++part.tested;
+          const double x0 = tx * tile + 0.5, x1 = std::min(tx * tile + tile, view.width) - 0.5;
+          const double y0 = ty * tile + 0.5, y1 = std::min(ty * tile + tile, view.height) - 0.5;
+          if (RegionBuilder::culled(region, x0, x1, y0, y1, range.zmin.at(tx, ty), zmax,
+                                    margin)) {
+            ++part.culled;
+            continue;
+          }
+          part.pairs.emplace_back(uint32_t(ty * bins.columns + tx), uint32_t(i));
+        }
+      }
+    }
+  });
+  // Counting sort by tile; chunks in order keep each tile's edges ascending.
+  bins.begin.assign(tiles + 1, 0);
+  for (const Part& part : parts) {
+    for (const auto& [t, e] : part.pairs) ++bins.begin[t + 1];
+    bins.tiles_tested += part.tested;
+    bins.tiles_culled += part.culled;
+  }
+  for (size_t t = 0; t < tiles; ++t) bins.begin[t + 1] += bins.begin[t];
+  bins.edges.resize(bins.begin[tiles]);
+  std::vector<uint32_t> cursor(bins.begin.begin(), bins.begin.end() - 1);
+  for (const Part& part : parts)
+    for (const auto& [t, e] : part.pairs) bins.edges[cursor[t]++] = e;
+  return bins;
+}
+
+}  // namespace penumbra

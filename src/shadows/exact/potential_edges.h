@@ -1,0 +1,74 @@
+#pragma once
+// The edges that can change what a point sees of a spherical light, and where on screen they
+// can do it (Laine et al. 2005, "potential silhouette edges"; docs/exact-soft-shadows.md).
+//
+// An edge matters to a point p only if it is a silhouette seen from p (its triangles lie on one
+// side of the plane through p and the edge) and its projection from p overlaps the light. Then
+// p, a point of the edge and a point q of the light are collinear, the plane through q and the
+// edge is the plane through p and the edge, and the edge is a silhouette seen from q too. As q
+// moves through the light ball the edge's status changes only where q crosses the plane of one
+// of its triangles. So an edge of two triangles is a potential silhouette exactly when it is a
+// silhouette from the light centre or the plane of one of its triangles cuts the ball; edges of
+// one triangle, or of three or more, always are.
+//
+// Numeric conventions: world space in double (the meshes are float, widened once). Plane values
+// are signed distances (unit normals).
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "core/view.h"
+#include "raster/depth_buffer.h"
+#include "scene/light.h"
+#include "scene/scene.h"
+
+namespace penumbra {
+
+// A triangle using an edge a -> b (PotentialEdge).
+//
+// Seen from a point p, the triangle lies on one side of the plane through p and the edge:
+//   side = sign(dot(cross(a - p, b - p), opposite - p)) = -winding * sign(plane value at p),
+// since that triple product is minus the volume of (a, b, opposite, p). So the silhouette test
+// at a point is one plane evaluation per triangle, the same value that says whether the
+// triangle lies between the point and the light (docs/exact-soft-shadows.md).
+struct EdgeTriangle {
+  uint32_t id;        // global triangle id (EyeBuffers::primitive)
+  bool light_above;   // the light centre lies strictly on the positive side of its plane
+  int8_t winding;     // +1: the triangle's normal is that of (a, b, opposite); -1: reversed
+  dvec3 normal;       // its plane: dot(normal, x) + offset, unit normal
+  double offset;
+};
+
+struct PotentialEdge {
+  dvec3 a, b;
+  uint32_t first_triangle, triangle_count;  // into PotentialEdges::triangles
+};
+
+struct PotentialEdges {
+  std::vector<PotentialEdge> edges;
+  std::vector<EdgeTriangle> triangles;
+  size_t scene_edges = 0;  // edges of the scene's meshes, for the ratio
+};
+
+// Every potential silhouette edge of the scene for `light` (radius > 0), in mesh and edge order.
+// Zero-area triangles never block a ray and are left out.
+PotentialEdges potentialEdges(const Scene& scene, const Light& light);
+
+// Screen tiles of 2^level pixels and, per tile, the potential edges whose region of influence
+// (the points from which the edge's projection can overlap the light) may hold a point of the
+// tile: the region lies inside the two planes through the edge tangent to the light and one
+// plane at each end, tested against the tile's pixel box and z-min/z-max (the 2004 paper's
+// tile culling, section 4). Conservative by `margin_footprints` pixel footprints, so a shaded
+// point that sits that far off the depth-buffer point (the oracle's ray origin does,
+// reference/ray_origin.h) still finds its edges.
+struct EdgeBins {
+  int level = 3;
+  int columns = 0, rows = 0;
+  std::vector<uint32_t> begin;  // per tile, into `edges`; one extra entry at the end
+  std::vector<uint32_t> edges;  // edge indices, ascending within a tile
+  uint64_t tiles_tested = 0, tiles_culled = 0;
+};
+EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
+                  const DepthBuffer& depth, int level, double margin_footprints);
+
+}  // namespace penumbra

@@ -1,0 +1,29 @@
+#pragma once
+// The hard shadow volume's stencil for one point light: per pixel, the signed count of shadow
+// volumes that contain the visible point (volume_technique.cpp says how z-pass and z-fail count).
+// Shared by the hard volumes (`volume`), which test it against zero, and the exact soft shadow
+// volumes (`exact`), which take it with two-sided casters as the number of triangles the segment
+// from the light centre to the point crosses (silhouette.h).
+#include "core/image.h"
+#include "core/stats.h"
+#include "core/view.h"
+#include "raster/depth_buffer.h"
+#include "scene/scene.h"
+#include "shadows/silhouette.h"
+#include "shadows/volume_options.h"
+
+namespace penumbra {
+
+struct ShadowStencilOptions {
+  VolumeMode mode = VolumeMode::Auto;
+  CasterPolicy policy = CasterPolicy::Auto;
+  bool two_level_stencil = true;
+  bool simd = true;
+};
+
+// Fills the passes "silhouette" and "volumes" of `stats` and its counters.
+Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View& view,
+                             const EyeBuffers& eye, const ShadowStencilOptions& options,
+                             Stats& stats);
+
+}  // namespace penumbra
