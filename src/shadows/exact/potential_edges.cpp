@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include <cfloat>
+
 #include "core/parallel.h"
 
 namespace penumbra {
@@ -110,7 +112,7 @@ struct ScreenPlaneD {
 constexpr int kMaxTileTriangles = 4;
 
 struct Region {
-  std::array<ScreenPlaneD, 4> planes;
+  std::array<ScreenPlaneD, kMaxRegionPlanes> planes;
   int plane_count = 0;
   // The edge's triangles' planes, for the silhouette test (EdgeTriangle); triangle_count 0
   // when there are more than kMaxTileTriangles.
@@ -157,6 +159,24 @@ class RegionBuilder {
     // point of the edge (docs/exact-soft-shadows.md).
     endPlane(region, a, u);
     endPlane(region, b, -u);
+    // Those planes leave a wide region for an edge whose line passes near the ball (no
+    // tangent planes and a half-space where it passes through). So the region is also bounded
+    // like a ball of radius rho (half the edge) around the edge's midpoint m: every segment from
+    // the light through the edge passes through that ball, so the region lies in the cone of
+    // the two balls' internal tangents, apex where they cross, O = c + (m - c) r / (r + rho),
+    // half-angle asin((r + rho) / |m - c|); four planes through O circumscribe it.
+    const dvec3 m = 0.5 * (a + b);
+    const double rho = 0.5 * glm::length(b - a);
+    const double distance = glm::length(m - c_);
+    const double sin_gamma = (r_ + rho) / distance * (1.0 + 1e-9);
+    if (sin_gamma < 0.9) {
+      const dvec3 d = (m - c_) / distance;
+      const dvec3 apex = c_ + (m - c_) * (r_ / (r_ + rho));
+      const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
+      const dvec3 helper = std::fabs(d.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+      const dvec3 t1 = glm::normalize(glm::cross(d, helper)), t2 = glm::cross(d, t1);
+      for (const dvec3& t : {t1, -t1, t2, -t2}) add(region, sin_gamma * d - cos_gamma * t, apex);
+    }
     screenBox(region, e);
     return region;
   }
@@ -192,15 +212,12 @@ class RegionBuilder {
   }
 
  private:
-  // Largest value over the box, at the corner the gradient points to, less the rounding of
-  // the double evaluation.
+  // Largest value over the box, at the corner the gradient points to. (Its rounding in double
+  // is some 1e-16 of the terms, far inside the margins the callers allow.)
   static double planeMax(const ScreenPlaneD& p, double x0, double x1, double y0, double y1,
                          double z0, double z1) {
     const double x = p.a >= 0 ? x1 : x0, y = p.b >= 0 ? y1 : y0, z = p.c >= 0 ? z1 : z0;
-    const double value = p.a * x + p.b * y + p.c * z + p.d;
-    const double scale =
-        std::fabs(p.a * x) + std::fabs(p.b * y) + std::fabs(p.c * z) + std::fabs(p.d);
-    return value + 1e-9 * scale;
+    return p.a * x + p.b * y + p.c * z + p.d;
   }
   static ScreenPlaneD negated(const ScreenPlaneD& p) { return {-p.a, -p.b, -p.c, -p.d}; }
 
@@ -330,11 +347,25 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   bins.rows = (view.height + tile - 1) / tile;
   const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
   const TileDepthRange& range = depth.tileRange(level);
+  const int coarse_level = std::min(level + 3, kMaxTileLevel);
   // A point d world units off its depth-buffer point changes a plane value by at most d, and
   // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
   const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
   const double margin = margin_footprints * pixel_angle;
   const RegionBuilder builder(light, view, level);
+  bins.tests.resize(edges.edges.size());
+  // Float evaluation error of E at any pixel centre of the image with z in [0, 1]: four
+  // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp).
+  const double x_max = view.width + 0.5, y_max = view.height + 0.5;
+  auto toFloat = [&](const ScreenPlaneD& p, float out[4], float& plane_margin) {
+    out[0] = float(p.a);
+    out[1] = float(p.b);
+    out[2] = float(p.c);
+    out[3] = float(p.d);
+    plane_margin = float(margin + 8.0 * FLT_EPSILON *
+                                      (std::fabs(p.a) * x_max + std::fabs(p.b) * y_max +
+                                       std::fabs(p.c) + std::fabs(p.d)));
+  };
 
   struct Part {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, edge)
@@ -347,21 +378,50 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
     const size_t end = std::min(edges.edges.size(), (chunk + 1) * kChunk);
     for (size_t i = chunk * kChunk; i < end; ++i) {
       const Region region = builder.region(edges.edges[i], edges.triangles.data());
-      for (int ty = region.ty0; ty <= region.ty1; ++ty) {
-        for (int tx = region.tx0; tx <= region.tx1; ++tx) {
-          const float zmax = range.zmax.at(tx, ty);
-          if (!(zmax > 0.0f)) continue;  // background only
-          ++part.tested;
-          const double x0 = tx * tile + 0.5, x1 = std::min(tx * tile + tile, view.width) - 0.5;
-          const double y0 = ty * tile + 0.5, y1 = std::min(ty * tile + tile, view.height) - 0.5;
-          if (RegionBuilder::culled(region, x0, x1, y0, y1, range.zmin.at(tx, ty), zmax,
-                                    margin)) {
-            ++part.culled;
-            continue;
-          }
-          part.pairs.emplace_back(uint32_t(ty * bins.columns + tx), uint32_t(i));
-        }
+      EdgeScreenTest& test = bins.tests[i];
+      test.region_count = region.plane_count;
+      for (int k = 0; k < region.plane_count; ++k)
+        toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
+      test.triangle_count = region.triangle_count;
+      for (int k = 0; k < region.triangle_count; ++k) {
+        const EdgeTriangle& t = *region.triangle[size_t(k)];
+        toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
+        test.light_above[k] = t.light_above;
+        test.weight[k] = t.light_above ? t.winding : -t.winding;
       }
+      // A quadtree over the culling tiles, from tiles 8x8 times larger down: a shadow's streak
+      // toward its vanishing point crosses a screen box that is mostly empty for it.
+      auto culledAt = [&](int k, int cx, int cy) {
+        const TileDepthRange& r = depth.tileRange(k);
+        const int size = 1 << k;
+        if (cx * size >= view.width || cy * size >= view.height) return true;
+        const float zmax = r.zmax.at(cx, cy);
+        if (!(zmax > 0.0f)) return true;  // background only
+        ++part.tested;
+        const double x0 = cx * size + 0.5, x1 = std::min(cx * size + size, view.width) - 0.5;
+        const double y0 = cy * size + 0.5, y1 = std::min(cy * size + size, view.height) - 0.5;
+        const bool culled =
+            RegionBuilder::culled(region, x0, x1, y0, y1, r.zmin.at(cx, cy), zmax, margin);
+        part.culled += culled;
+        return culled;
+      };
+      auto visit = [&](auto&& self, int k, int cx, int cy) -> void {
+        const int shift = k - level;  // culling tiles of this tile: [cx << shift, ...)
+        if ((cx + 1) << shift <= region.tx0 || cx << shift > region.tx1 ||
+            (cy + 1) << shift <= region.ty0 || cy << shift > region.ty1)
+          return;
+        if (culledAt(k, cx, cy)) return;
+        if (k == level) {
+          part.pairs.emplace_back(uint32_t(cy * bins.columns + cx), uint32_t(i));
+          return;
+        }
+        for (int child = 0; child < 4; ++child)
+          self(self, k - 1, 2 * cx + (child & 1), 2 * cy + (child >> 1));
+      };
+      const int shift = coarse_level - level;
+      for (int cy = region.ty0 >> shift; cy <= region.ty1 >> shift; ++cy)
+        for (int cx = region.tx0 >> shift; cx <= region.tx1 >> shift; ++cx)
+          visit(visit, coarse_level, cx, cy);
     }
   });
   // Counting sort by tile; chunks in order keep each tile's edges ascending.

@@ -21,6 +21,7 @@
 #include "raster/depth_buffer.h"
 #include "scene/light.h"
 #include "scene/scene.h"
+#include "shadows/exact/edge_screen_test.h"
 
 namespace penumbra {
 
@@ -66,6 +67,8 @@ struct EdgeBins {
   int columns = 0, rows = 0;
   std::vector<uint32_t> begin;  // per tile, into `edges`; one extra entry at the end
   std::vector<uint32_t> edges;  // edge indices, ascending within a tile
+  // Per potential edge, its planes for the per-pixel quick reject (edge_screen_test.h).
+  std::vector<EdgeScreenTest> tests;
   uint64_t tiles_tested = 0, tiles_culled = 0;
 };
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,

@@ -29,6 +29,16 @@ struct SampleEdge {
 // hold n entries, n a multiple of kSampleBlock, and are aligned to kSampleAlignment bytes.
 inline constexpr size_t kSampleBlock = 16;
 inline constexpr size_t kSampleAlignment = 64;
+// The samples of one point on its plane at unit distance: sample i at polar radius^2
+// radius2[i] of the unit disk and angle (cos_phi[i], sin_phi[i]) takes the cone angle theta
+// with 1 - cos(theta) = radius2[i] * one_minus_cos_max (uniform in solid angle over the cap,
+// as the oracle's sampleSphereCone) and lands at tan(theta) (cos_phi, sin_phi). Same layout
+// rules as addEdgeCrossings for x and y (the inputs need no alignment).
+void samplePositions(const float* radius2, const float* cos_phi, const float* sin_phi,
+                     float one_minus_cos_max, float* x, float* y, size_t n, bool simd);
+void samplePositionsScalar(const float* radius2, const float* cos_phi, const float* sin_phi,
+                           float one_minus_cos_max, float* x, float* y, size_t n);
+
 void addEdgeCrossings(const SampleEdge& edge, const float* x, const float* y, int32_t* count,
                       size_t n, bool simd);
 void addEdgeCrossingsScalar(const SampleEdge& edge, const float* x, const float* y,

@@ -14,6 +14,22 @@ namespace penumbra {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+void SamplePositionsSimd(const float* radius2, const float* cos_phi, const float* sin_phi,
+                         float one_minus_cos_max, float* x, float* y, size_t n) {
+  const hn::CappedTag<float, kSampleBlock> df;
+  const size_t lanes = hn::Lanes(df);
+  const auto omc_max = hn::Set(df, one_minus_cos_max);
+  const auto one = hn::Set(df, 1.0f), two = hn::Set(df, 2.0f);
+  for (size_t i = 0; i < n; i += lanes) {
+    const auto one_minus_cos = hn::Mul(hn::LoadU(df, radius2 + i), omc_max);
+    const auto cos_theta = hn::Sub(one, one_minus_cos);
+    const auto tan_theta =
+        hn::Div(hn::Sqrt(hn::Mul(one_minus_cos, hn::Sub(two, one_minus_cos))), cos_theta);
+    hn::Store(hn::Mul(tan_theta, hn::LoadU(df, cos_phi + i)), df, x + i);
+    hn::Store(hn::Mul(tan_theta, hn::LoadU(df, sin_phi + i)), df, y + i);
+  }
+}
+
 void AddEdgeCrossingsSimd(const SampleEdge& e, const float* x, const float* y, int32_t* count,
                           size_t n) {
   // At most kSampleBlock lanes, so that n (a multiple of it) is a whole number of vectors.
@@ -52,6 +68,17 @@ HWY_AFTER_NAMESPACE();
 namespace penumbra {
 
 HWY_EXPORT(AddEdgeCrossingsSimd);
+HWY_EXPORT(SamplePositionsSimd);
+
+void samplePositions(const float* radius2, const float* cos_phi, const float* sin_phi,
+                     float one_minus_cos_max, float* x, float* y, size_t n, bool simd) {
+  if (simd) {
+    HWY_DYNAMIC_DISPATCH(SamplePositionsSimd)(radius2, cos_phi, sin_phi, one_minus_cos_max, x, y,
+                                              n);
+  } else {
+    samplePositionsScalar(radius2, cos_phi, sin_phi, one_minus_cos_max, x, y, n);
+  }
+}
 
 void addEdgeCrossings(const SampleEdge& edge, const float* x, const float* y, int32_t* count,
                       size_t n, bool simd) {
@@ -68,6 +95,11 @@ void addEdgeCrossings(const SampleEdge& edge, const float* x, const float* y, in
 #else  // PENUMBRA_SCALAR_ONLY
 
 namespace penumbra {
+
+void samplePositions(const float* radius2, const float* cos_phi, const float* sin_phi,
+                     float one_minus_cos_max, float* x, float* y, size_t n, bool) {
+  samplePositionsScalar(radius2, cos_phi, sin_phi, one_minus_cos_max, x, y, n);
+}
 
 void addEdgeCrossings(const SampleEdge& edge, const float* x, const float* y, int32_t* count,
                       size_t n, bool) {

@@ -1,0 +1,42 @@
+#pragma once
+// The per-pixel quick reject of the exact soft shadow volumes, one edge against a block of 64
+// pixels at a time: before the exact test in double (exact_technique.cpp), the pixel's
+// depth-buffer point is put in float into the edge's region planes and its triangles' planes
+// (potential_edges.h, binEdges), screen-space forms set up once per edge (wedge_screen.h: the
+// world plane value over w). A pixel is kept when it may lie in the region and may see the edge
+// as a silhouette: every plane within its margin of the point, which covers the float rounding
+// and the distance from the depth-buffer point to the shaded point.
+#include <cstdint>
+
+namespace penumbra {
+
+inline constexpr int kBlockPixels = 64;
+// Tangent planes, end planes and a circumscribed pyramid (potential_edges.cpp).
+inline constexpr int kMaxRegionPlanes = 8;
+
+// E(sx, sy, z) = ((a sx + b sy) + c z) + d, in float, in this order.
+struct EdgeScreenTest {
+  float region[kMaxRegionPlanes][4];
+  float region_margin[kMaxRegionPlanes];
+  int region_count = 0;
+  // Triangles: a sign is known where |E| > margin; included (crossed between point and light)
+  // where that sign is not the light centre's; an included triangle adds `weight` (+-1).
+  float triangle[4][4];
+  float triangle_margin[4];
+  bool light_above[4];
+  int32_t weight[4];
+  int triangle_count = 0;  // 0: no silhouette test (more than 4 triangles)
+};
+
+// Up to 64 pixels: screen position of the centre and stored depth; `active` has bit i set for
+// the pixels to test.
+struct alignas(64) PixelBlock {
+  float sx[kBlockPixels], sy[kBlockPixels], z[kBlockPixels];
+  uint64_t active = 0;
+};
+
+// Bit i set: pixel i is active and may need the exact test.
+uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, bool simd);
+uint64_t edgeCandidatesScalar(const EdgeScreenTest& test, const PixelBlock& block);
+
+}  // namespace penumbra

@@ -1,0 +1,91 @@
+// SIMD twin of edge_screen_test_scalar.cpp (Highway, dispatched at run time): 4 to 16 pixels
+// per step, the same float operations in the same order.
+#include "shadows/exact/edge_screen_test.h"
+
+#ifndef PENUMBRA_SCALAR_ONLY
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shadows/exact/edge_screen_test_simd.cpp"
+#include <hwy/foreach_target.h>  // re-includes this file once per target
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace penumbra {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
+  const hn::CappedTag<float, 16> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const size_t lanes = hn::Lanes(df);
+  HWY_ALIGN uint8_t bits[8];
+  uint64_t out = 0;
+  for (size_t i = 0; i < size_t(kBlockPixels); i += lanes) {
+    const uint64_t active = (block.active >> i) & (lanes >= 64 ? ~0ull : ((1ull << lanes) - 1));
+    if (active == 0) continue;
+    const auto sx = hn::Load(df, block.sx + i);
+    const auto sy = hn::Load(df, block.sy + i);
+    const auto z = hn::Load(df, block.z + i);
+    auto keep = hn::FirstN(df, lanes);  // all true
+    for (int k = 0; k < t.region_count; ++k) {
+      const float* p = t.region[k];
+      const auto e = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), sx),
+                                             hn::Mul(hn::Set(df, p[1]), sy)),
+                                     hn::Mul(hn::Set(df, p[2]), z)),
+                             hn::Set(df, p[3]));
+      keep = hn::And(keep, hn::Ge(e, hn::Set(df, -t.region_margin[k])));
+    }
+    if (t.triangle_count > 0) {
+      auto unknown = hn::FirstN(df, 0);  // all false
+      auto weight = hn::Zero(di);
+      for (int k = 0; k < t.triangle_count; ++k) {
+        const float* p = t.triangle[k];
+        const auto e = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), sx),
+                                               hn::Mul(hn::Set(df, p[1]), sy)),
+                                       hn::Mul(hn::Set(df, p[2]), z)),
+                               hn::Set(df, p[3]));
+        const auto positive = hn::Gt(e, hn::Set(df, t.triangle_margin[k]));
+        const auto negative = hn::Lt(e, hn::Set(df, -t.triangle_margin[k]));
+        unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
+        const auto included = t.light_above[k] ? negative : positive;
+        weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),
+                                                    hn::Set(di, t.weight[k])));
+      }
+      keep = hn::And(keep, hn::Or(unknown, hn::RebindMask(df, hn::Ne(weight, hn::Zero(di)))));
+    }
+    hn::StoreMaskBits(df, keep, bits);
+    uint64_t mask = 0;
+    for (size_t b = 0; b < (lanes + 7) / 8; ++b) mask |= uint64_t(bits[b]) << (8 * b);
+    out |= (mask & active) << i;
+  }
+  return out;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace penumbra
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace penumbra {
+
+HWY_EXPORT(EdgeCandidatesSimd);
+
+uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, bool simd) {
+  if (simd) return HWY_DYNAMIC_DISPATCH(EdgeCandidatesSimd)(test, block);
+  return edgeCandidatesScalar(test, block);
+}
+
+}  // namespace penumbra
+#endif  // HWY_ONCE
+
+#else  // PENUMBRA_SCALAR_ONLY
+
+namespace penumbra {
+
+uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, bool) {
+  return edgeCandidatesScalar(test, block);
+}
+
+}  // namespace penumbra
+
+#endif  // PENUMBRA_SCALAR_ONLY
