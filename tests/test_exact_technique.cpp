@@ -474,11 +474,9 @@ Frame casterFrame(const char* name, Mesh caster, vec3 light, float radius, vec3 
 // meshes somewhere (a weight of +-1 per silhouette edge, a winding-based side).
 //
 // The light (radius 0.7 at (-2, 6, 1.5)) is kept clear of the planes of the boxes' and the
-// fins' triangles: a triangle whose plane cuts the light is a separate case,
-// CasterPlaneThroughTheLight below, which fails (the open box under a light at z = 1, whose
-// ball the wall z = 0.5 cuts, differs on 9 pixels). The dome cannot avoid it (the planes of the
-// triangles along its outline seen from the light cut the light): its 4 differing pixels are
-// that bug, not ties (exact brighter by 1 to 3 samples); the globe's one is a centre-count tie.
+// fins' triangles: a triangle whose plane cuts the light is CasterPlaneThroughTheLight below.
+// The dome cannot avoid it (the planes of the triangles along its outline seen from the light
+// cut the light), so it covers both; the globe's one differing pixel is a centre-count tie.
 TEST(ExactTechnique, OpenAndNonManifoldCasters) {
   constexpr int kSamples = 64;
   struct Case {
@@ -525,24 +523,11 @@ TEST(ExactTechnique, OpenAndNonManifoldCasters) {
 // oracle up to ties, as in test 5. If this failed, `exact` would drop such triangles from the
 // edges' weights and let light through them.
 //
-// KNOWN FAILURE, skipped: exact_technique.cpp (pixelVisibility, the weight loop) leaves out
-// every triangle whose plane has the point and the light centre on one side
-// (`if ((at_p > 0.0) == t.light_above) continue;`). Its comment says that is right "while the
-// plane misses the light", but nothing checks that the plane misses the light. A sample beyond
-// such a plane whose ray crosses the triangle is then counted unblocked (never the other way:
-// exact is only ever too bright here). Measured at N = 64: quad 836 of 36921 covered pixels
-// differ, all in the penumbra, by up to 10 samples (pixel (93, 63): exact 1.0, oracle 0.84375;
-// pixel (61, 51), floor point (-2.0943, 0, 0.0493): exact 1.0, oracle 63/64, the one missing
-// sample blocked by the quad's triangle 3 alone); slab 360 of 36926 differ (pixel (121, 75):
-// exact 0.921875, oracle 0.8125; the missing samples cross both big faces and both are left
-// out); open box 9 of 10888 differ (pixel (84, 65): exact 1.0, oracle 0.953125). The dome of
-// test 5 shows it too (4 pixels, within the tie allowance there). Closed meshes hide it
-// whenever another triangle on the ray is counted, so the built-in scenes do not show it.
-// PENUMBRA_RUN_KNOWN_FAILURES=1 in the environment runs it anyway.
+// These triangles are counted sample by sample (potential_edges.h, CuttingTriangle); before
+// that, `exact` left them out of the edge weights and was too bright here: quad 836 of 36921
+// covered pixels differed at N = 64, by up to 10 samples; slab 360 of 36926; open box 9 of
+// 10888.
 TEST(ExactTechnique, CasterPlaneThroughTheLight) {
-  if (!std::getenv("PENUMBRA_RUN_KNOWN_FAILURES"))
-    GTEST_SKIP() << "known bug: triangles whose plane cuts the light are left out of the edge "
-                    "weights when the point and the light centre are on one side (see comment)";
   constexpr int kSamples = 64;
   Mesh quad = soup("quad", {vec3(-1, 0.3f, 0), vec3(1, 0.3f, 0), vec3(1, 2, 0), vec3(-1, 2, 0)},
                    {0, 1, 2, 0, 2, 3});

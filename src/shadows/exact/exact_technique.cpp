@@ -162,6 +162,7 @@ struct Scratch {
   PixelFrame frames[kBlockPixels];
   int px[kBlockPixels], py[kBlockPixels];
   std::vector<PixelEdge> edges[kBlockPixels];
+  std::vector<const CuttingTriangle*> cutting[kBlockPixels];
   explicit Scratch(const SampleSet& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
         into(size_t(s.n)) {}
@@ -183,13 +184,35 @@ class ExactSoftShadows final : public PreparedTechnique {
                          const RenderContext& context) const override;
 
  private:
-  float finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges, const Light& light,
+  float finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
+                    const std::vector<const CuttingTriangle*>& cutting, const Light& light,
                     bool simd, Scratch& scratch) const;
 
   ExactOptions options_;
   const Scene& scene_;
   SampleSet samples_;
 };
+
+// The oracle shortens its shadow rays by this much so the light point itself never blocks
+// (reference_technique.cpp).
+constexpr double kTfarShrink = 1e-6;
+
+// Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
+bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t) {
+  const dvec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];
+  const dvec3 q = glm::cross(d, e2);
+  const double det = glm::dot(e1, q);
+  if (det == 0.0) return false;  // the segment lies in the triangle's plane: crosses nothing
+  const double inv = 1.0 / det;
+  const dvec3 s = o - t.v[0];
+  const double u = glm::dot(s, q) * inv;
+  if (u < 0.0 || u > 1.0) return false;
+  const dvec3 r = glm::cross(s, e1);
+  const double v = glm::dot(d, r) * inv;
+  if (v < 0.0 || u + v > 1.0) return false;
+  const double hit = glm::dot(e2, r) * inv;
+  return hit > 0.0 && hit < t_max;
+}
 
 // Per scene triangle, decided once per light and remembered (as FacingAway): is the whole light
 // strictly in front of it, on the side the eye sees, by more than the margin finishPixel uses
@@ -333,6 +356,7 @@ bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const Pi
 }
 
 float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
+                                    const std::vector<const CuttingTriangle*>& cutting,
                                     const Light& light, bool simd, Scratch& scratch) const {
   if (!f.ready) return f.stencil == 0 ? 1.0f : 0.0f;  // ClearOfLight, and no edge
   const dvec3 c(light.center);
@@ -355,8 +379,10 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
       into_count += into;
     }
   }
-  if (edges.empty()) return f.centre_count == 0 ? float(n - into_count) / float(n) : 0.0f;
-  if (f.centre_count > f.reach) return 0.0f;  // no sample's count can come down to 0
+  if (edges.empty() && cutting.empty())
+    return f.centre_count == 0 ? float(n - into_count) / float(n) : 0.0f;
+  // No sample's count can come down to 0 (cutting triangles only add).
+  if (f.centre_count > f.reach) return 0.0f;
 
   // Sample positions on the plane at unit distance (sampleSphereCone's angles, in float).
   float* sx = scratch.x.data()->v;
@@ -370,6 +396,20 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
       const uint32_t b = e.runs.begin[k];
       if (e.runs.end[k] > b)
         addEdgeCrossings(e.edge, sx + b, sy + b, count + b, e.runs.end[k] - b, simd);
+    }
+  }
+  // Triangles cutting the light, against each sample's segment as the oracle traces it.
+  if (!cutting.empty()) {
+    for (int i = 0; i < n; ++i) {
+      if (count[i] != 0) continue;  // blocked already
+      const ConeSample s = sampleSphereCone(f.cone, samples_.disk[size_t(i)]);
+      const double t_max = double(s.distance) * (1.0 - kTfarShrink);
+      for (const CuttingTriangle* t : cutting) {
+        if (segmentHitsTriangle(f.p, dvec3(s.direction), t_max, *t)) {
+          ++count[i];
+          break;
+        }
+      }
     }
   }
   int lit = 0;
@@ -497,10 +537,28 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             ++work.inside;
           }
         }
+        // Triangles cutting the light: every pixel of the tile takes them, less the centre
+        // segment's crossings, which the stencil counted.
+        const uint32_t* cut_begin = bins.cutting.data() + bins.cutting_begin[index];
+        const uint32_t* cut_end = bins.cutting.data() + bins.cutting_begin[index + 1];
         for (uint64_t active = block.active; active != 0; active &= active - 1) {
           const int i = __builtin_ctzll(active);
-          soft.at(scratch.px[i], scratch.py[i]) =
-              finishPixel(scratch.frames[i], scratch.edges[i], light, context.simd, scratch);
+          scratch.cutting[i].clear();
+          PixelFrame& f = scratch.frames[i];
+          for (const uint32_t* it = cut_begin; it != cut_end; ++it) {
+            const CuttingTriangle& t = edges.cutting[*it];
+            if (t.id == f.primitive) continue;
+            if (!f.ready) {
+              float known = 0.0f;  // never set: a clear pixel is outside the light
+              setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
+                         origins, light, f, known);
+            }
+            if (segmentHitsTriangle(f.p, dvec3(light.center) - f.p, 1.0 - kTfarShrink, t))
+              --f.centre_count;
+            scratch.cutting[i].push_back(&t);
+          }
+          soft.at(scratch.px[i], scratch.py[i]) = finishPixel(
+              f, scratch.edges[i], scratch.cutting[i], light, context.simd, scratch);
         }
       }
       progress.add();

@@ -43,6 +43,19 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
                         : dvec4(0.0);
       }
     });
+    // Planes that cut the ball (with slack: a triangle counted sample by sample is exact too).
+    std::vector<uint8_t> cuts(mesh.triangleCount(), 0);
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+      const dvec4& plane = planes[t];
+      if (plane == dvec4(0.0)) continue;
+      const double scale = glm::length(dvec3(mesh.vertex(t, 0)) - c) + r;
+      if (std::fabs(glm::dot(dvec3(plane), c) + plane.w) <= r * (1.0 + kSlack) + kSlack * scale) {
+        cuts[t] = 1;
+        out.cutting.push_back(CuttingTriangle{
+            first_id + uint32_t(t),
+            {dvec3(mesh.vertex(t, 0)), dvec3(mesh.vertex(t, 1)), dvec3(mesh.vertex(t, 2))}});
+      }
+    }
     const size_t edge_count = adjacency.edges.size();
     const size_t chunks = (edge_count + kChunk - 1) / kChunk;
     std::vector<PotentialEdges> parts(chunks);
@@ -52,7 +65,6 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
       for (size_t i = chunk * kChunk; i < end; ++i) {
         const Edge& edge = adjacency.edges[i];
         const dvec3 a(mesh.positions[edge.v0]), b(mesh.positions[edge.v1]);
-        const double scale = glm::length(a - c) + glm::length(b - c) + r;
         const size_t first = part.triangles.size();
         int cutting = 0, centre_sides = 0;
         for (uint32_t u = 0; u < edge.use_count; ++u) {
@@ -66,7 +78,10 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
           }
           const dvec3 normal(plane);
           const double at_centre = glm::dot(normal, c) + plane.w;
-          if (std::fabs(at_centre) <= r * (1.0 + kSlack) + kSlack * 1e-3 * scale) ++cutting;
+          if (cuts[t]) {
+            ++cutting;
+            continue;
+          }
           // Side of the triangle seen from the centre (EdgeTriangle).
           const int8_t winding =
               glm::dot(normal, glm::cross(b - a, opposite - a)) >= 0.0 ? int8_t(1) : int8_t(-1);
@@ -75,9 +90,10 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
               EdgeTriangle{first_id + t, at_centre > 0.0, winding, normal, plane.w});
         }
         const size_t count = part.triangles.size() - first;
-        if (count == 0) continue;
+        if (count == 0) continue;  // only cutting triangles, or none with an area
         // Two triangles on opposite sides seen from the centre, and neither plane near the
-        // light: never a silhouette from any point of it.
+        // light: never a silhouette from any point of it. (With one of them cutting the light,
+        // the other is alone in the sum: an open edge.)
         const bool potential = count != 2 || cutting > 0 || centre_sides != 0;
         if (!potential) {
           part.triangles.resize(first);
@@ -160,24 +176,23 @@ class RegionBuilder {
     endPlane(region, a, u);
     endPlane(region, b, -u);
     // Those planes leave a wide region for an edge whose line passes near the ball (no
-    // tangent planes and a half-space where it passes through). So the region is also bounded
-    // like a ball of radius rho (half the edge) around the edge's midpoint m: every segment from
-    // the light through the edge passes through that ball, so the region lies in the cone of
-    // the two balls' internal tangents, apex where they cross, O = c + (m - c) r / (r + rho),
-    // half-angle asin((r + rho) / |m - c|); four planes through O circumscribe it.
-    const dvec3 m = 0.5 * (a + b);
-    const double rho = 0.5 * glm::length(b - a);
-    const double distance = glm::length(m - c_);
-    const double sin_gamma = (r_ + rho) / distance * (1.0 + 1e-9);
-    if (sin_gamma < 0.9) {
-      const dvec3 d = (m - c_) / distance;
-      const dvec3 apex = c_ + (m - c_) * (r_ / (r_ + rho));
-      const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
-      const dvec3 helper = std::fabs(d.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
-      const dvec3 t1 = glm::normalize(glm::cross(d, helper)), t2 = glm::cross(d, t1);
-      for (const dvec3& t : {t1, -t1, t2, -t2}) add(region, sin_gamma * d - cos_gamma * t, apex);
-    }
-    screenBox(region, e);
+    // tangent planes and a half-space where it passes through), so the region is also bounded
+    // as that of the ball around the edge (pyramid).
+    pyramid(region, 0.5 * (a + b), 0.5 * glm::length(b - a));
+    const dvec3 ends[2] = {a, b};
+    screenBox(region, ends, 2);
+    return region;
+  }
+
+  // A triangle whose plane cuts the light: the points some segment from the light through it
+  // reaches, bounded by the pyramid around a ball holding the triangle.
+  Region region(const CuttingTriangle& t) const {
+    Region region;
+    const dvec3 m = (t.v[0] + t.v[1] + t.v[2]) / 3.0;
+    const double rho = std::max({glm::length(t.v[0] - m), glm::length(t.v[1] - m),
+                                 glm::length(t.v[2] - m)});
+    pyramid(region, m, rho);
+    screenBox(region, t.v, 3);
     return region;
   }
 
@@ -212,6 +227,23 @@ class RegionBuilder {
   }
 
  private:
+  // The region of anything inside a ball of radius rho around m: every segment from the light
+  // through it passes through the ball, so the region lies in the cone of the two balls'
+  // internal tangents, apex where they cross, O = c + (m - c) r / (r + rho), half-angle
+  // asin((r + rho) / |m - c|); four planes through O circumscribe it. None when the ball
+  // comes near the light.
+  void pyramid(Region& region, const dvec3& m, double rho) const {
+    const double distance = glm::length(m - c_);
+    const double sin_gamma = (r_ + rho) / distance * (1.0 + 1e-9);
+    if (!(sin_gamma < 0.9)) return;
+    const dvec3 d = (m - c_) / distance;
+    const dvec3 apex = c_ + (m - c_) * (r_ / (r_ + rho));
+    const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
+    const dvec3 helper = std::fabs(d.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+    const dvec3 t1 = glm::normalize(glm::cross(d, helper)), t2 = glm::cross(d, t1);
+    for (const dvec3& t : {t1, -t1, t2, -t2}) add(region, sin_gamma * d - cos_gamma * t, apex);
+  }
+
   // Largest value over the box, at the corner the gradient points to. (Its rounding in double
   // is some 1e-16 of the terms, far inside the margins the callers allow.)
   static double planeMax(const ScreenPlaneD& p, double x0, double x1, double y0, double y1,
@@ -248,18 +280,19 @@ class RegionBuilder {
   }
 
   // The screen box of the region's part in front of the eye: the region lies in the convex
-  // hull of the edge's end points and the shadow cones of both ends (a point x + t (x - q) of
-  // the edge's shadow is the same blend of a's and b's), each cone inside a square pyramid of
-  // four directions. Vertices of the hull cut at w = near are the end points in front of it and
+  // hull of the edge's (or triangle's) corners and the shadow cones of the corners (a point
+  // x + t (x - q) of the shadow is the same blend of the corners' shadow points), each cone
+  // inside a square pyramid of four directions. Vertices of the hull cut at w = near are the end points in front of it and
   // the crossings of its edges with it; directions away from the eye add their vanishing
   // points. A cone with directions both toward and away from the eye reaches the screen's
   // border, so the box is the whole screen then.
-  void screenBox(Region& region, const PotentialEdge& e) const {
-    const dvec4 points[2] = {vp_ * dvec4(e.a, 1.0), vp_ * dvec4(e.b, 1.0)};
-    dvec4 directions[8];
+  void screenBox(Region& region, const dvec3* ends, int end_count) const {
+    std::array<dvec4, 3> points;
+    std::array<dvec4, 12> directions;
     bool full = false;
-    for (int k = 0; k < 2 && !full; ++k) {
-      const dvec3 end = k == 0 ? e.a : e.b;
+    for (int k = 0; k < end_count && !full; ++k) {
+      const dvec3 end = ends[k];
+      points[size_t(k)] = vp_ * dvec4(end, 1.0);
       const dvec3 away = end - c_;
       const double distance = glm::length(away);
       if (!(distance > r_ * (1.0 + 1e-9))) {
@@ -275,16 +308,17 @@ class RegionBuilder {
       const double spread = tan_alpha * (1.0 + 1e-6) + 1e-9;
       for (int s = 0; s < 4; ++s) {
         const dvec3 d = w + spread * ((s & 1 ? 1.0 : -1.0) * t1 + (s & 2 ? 1.0 : -1.0) * t2);
-        directions[k * 4 + s] = vp_ * dvec4(d, 0.0);
+        directions[size_t(k * 4 + s)] = vp_ * dvec4(d, 0.0);
       }
     }
+    const int direction_count = 4 * end_count;
     int positive = 0, negative = 0;
     if (!full) {
-      for (const dvec4& d : directions) {
-        positive += d.w > 0.0;
-        negative += d.w < 0.0;
+      for (int k = 0; k < direction_count; ++k) {
+        positive += directions[size_t(k)].w > 0.0;
+        negative += directions[size_t(k)].w < 0.0;
       }
-      full = positive != 8 && negative != 8;
+      full = positive != direction_count && negative != direction_count;
     }
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     auto extend = [&](const dvec4& clip) {
@@ -300,15 +334,20 @@ class RegionBuilder {
       extend(from + t * step);
     };
     if (!full) {
-      for (const dvec4& p : points) {
+      for (int k = 0; k < end_count; ++k) {
+        const dvec4& p = points[size_t(k)];
         if (p.w >= near_) extend(p);
-        for (const dvec4& d : directions) {
+        for (int j = 0; j < direction_count; ++j) {
+          const dvec4& d = directions[size_t(j)];
           if ((p.w < near_ && d.w > 0.0) || (p.w > near_ && d.w < 0.0)) crossing(p, d);
         }
+        for (int j = k + 1; j < end_count; ++j) {
+          const dvec4& q = points[size_t(j)];
+          if ((p.w < near_) != (q.w < near_)) crossing(p, q - p);
+        }
       }
-      if ((points[0].w < near_) != (points[1].w < near_)) crossing(points[0], points[1] - points[0]);
-      if (positive == 8)
-        for (const dvec4& d : directions) extend(d);
+      if (positive == direction_count)
+        for (int j = 0; j < direction_count; ++j) extend(directions[size_t(j)]);
       if (x0 > x1) return;  // nothing in front of the eye
     }
     const int tile = 1 << level_;
@@ -346,7 +385,6 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   bins.columns = (view.width + tile - 1) / tile;
   bins.rows = (view.height + tile - 1) / tile;
   const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
-  const TileDepthRange& range = depth.tileRange(level);
   const int coarse_level = std::min(level + 3, kMaxTileLevel);
   // A point d world units off its depth-buffer point changes a plane value by at most d, and
   // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
@@ -368,74 +406,89 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   };
 
   struct Part {
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, edge)
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, item)
     uint64_t tested = 0, culled = 0;
   };
-  const size_t chunks = (edges.edges.size() + kChunk - 1) / kChunk;
-  std::vector<Part> parts(chunks);
-  parallelFor(chunks, [&](size_t chunk) {
-    Part& part = parts[chunk];
-    const size_t end = std::min(edges.edges.size(), (chunk + 1) * kChunk);
-    for (size_t i = chunk * kChunk; i < end; ++i) {
-      const Region region = builder.region(edges.edges[i], edges.triangles.data());
-      EdgeScreenTest& test = bins.tests[i];
-      test.region_count = region.plane_count;
-      for (int k = 0; k < region.plane_count; ++k)
-        toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
-      test.triangle_count = region.triangle_count;
-      for (int k = 0; k < region.triangle_count; ++k) {
-        const EdgeTriangle& t = *region.triangle[size_t(k)];
-        toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
-        test.light_above[k] = t.light_above;
-        test.weight[k] = t.light_above ? t.winding : -t.winding;
+  // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
+  // item order within a tile: chunks in order, then a counting sort by tile).
+  auto binAll = [&](size_t count, const auto& regionOf, std::vector<uint32_t>& begin,
+                    std::vector<uint32_t>& items) {
+    const size_t chunks = (count + kChunk - 1) / kChunk;
+    std::vector<Part> parts(chunks);
+    parallelFor(chunks, [&](size_t chunk) {
+      Part& part = parts[chunk];
+      const size_t end = std::min(count, (chunk + 1) * kChunk);
+      for (size_t i = chunk * kChunk; i < end; ++i) {
+        const Region region = regionOf(i);
+        // A quadtree over the culling tiles, from tiles 8x8 times larger down: a shadow's
+        // streak toward its vanishing point crosses a screen box that is mostly empty for it.
+        auto culledAt = [&](int k, int cx, int cy) {
+          const TileDepthRange& r = depth.tileRange(k);
+          const int size = 1 << k;
+          if (cx * size >= view.width || cy * size >= view.height) return true;
+          const float zmax = r.zmax.at(cx, cy);
+          if (!(zmax > 0.0f)) return true;  // background only
+          ++part.tested;
+          const double x0 = cx * size + 0.5, x1 = std::min(cx * size + size, view.width) - 0.5;
+          const double y0 = cy * size + 0.5, y1 = std::min(cy * size + size, view.height) - 0.5;
+          const bool culled =
+              RegionBuilder::culled(region, x0, x1, y0, y1, r.zmin.at(cx, cy), zmax, margin);
+          part.culled += culled;
+          return culled;
+        };
+        auto visit = [&](auto&& self, int k, int cx, int cy) -> void {
+          const int shift = k - level;  // culling tiles of this tile: [cx << shift, ...)
+          if ((cx + 1) << shift <= region.tx0 || cx << shift > region.tx1 ||
+              (cy + 1) << shift <= region.ty0 || cy << shift > region.ty1)
+            return;
+          if (culledAt(k, cx, cy)) return;
+          if (k == level) {
+            part.pairs.emplace_back(uint32_t(cy * bins.columns + cx), uint32_t(i));
+            return;
+          }
+          for (int child = 0; child < 4; ++child)
+            self(self, k - 1, 2 * cx + (child & 1), 2 * cy + (child >> 1));
+        };
+        const int shift = coarse_level - level;
+        for (int cy = region.ty0 >> shift; cy <= region.ty1 >> shift; ++cy)
+          for (int cx = region.tx0 >> shift; cx <= region.tx1 >> shift; ++cx)
+            visit(visit, coarse_level, cx, cy);
       }
-      // A quadtree over the culling tiles, from tiles 8x8 times larger down: a shadow's streak
-      // toward its vanishing point crosses a screen box that is mostly empty for it.
-      auto culledAt = [&](int k, int cx, int cy) {
-        const TileDepthRange& r = depth.tileRange(k);
-        const int size = 1 << k;
-        if (cx * size >= view.width || cy * size >= view.height) return true;
-        const float zmax = r.zmax.at(cx, cy);
-        if (!(zmax > 0.0f)) return true;  // background only
-        ++part.tested;
-        const double x0 = cx * size + 0.5, x1 = std::min(cx * size + size, view.width) - 0.5;
-        const double y0 = cy * size + 0.5, y1 = std::min(cy * size + size, view.height) - 0.5;
-        const bool culled =
-            RegionBuilder::culled(region, x0, x1, y0, y1, r.zmin.at(cx, cy), zmax, margin);
-        part.culled += culled;
-        return culled;
-      };
-      auto visit = [&](auto&& self, int k, int cx, int cy) -> void {
-        const int shift = k - level;  // culling tiles of this tile: [cx << shift, ...)
-        if ((cx + 1) << shift <= region.tx0 || cx << shift > region.tx1 ||
-            (cy + 1) << shift <= region.ty0 || cy << shift > region.ty1)
-          return;
-        if (culledAt(k, cx, cy)) return;
-        if (k == level) {
-          part.pairs.emplace_back(uint32_t(cy * bins.columns + cx), uint32_t(i));
-          return;
-        }
-        for (int child = 0; child < 4; ++child)
-          self(self, k - 1, 2 * cx + (child & 1), 2 * cy + (child >> 1));
-      };
-      const int shift = coarse_level - level;
-      for (int cy = region.ty0 >> shift; cy <= region.ty1 >> shift; ++cy)
-        for (int cx = region.tx0 >> shift; cx <= region.tx1 >> shift; ++cx)
-          visit(visit, coarse_level, cx, cy);
+    });
+    begin.assign(tiles + 1, 0);
+    for (const Part& part : parts) {
+      for (const auto& [t, item] : part.pairs) ++begin[t + 1];
+      bins.tiles_tested += part.tested;
+      bins.tiles_culled += part.culled;
     }
-  });
-  // Counting sort by tile; chunks in order keep each tile's edges ascending.
-  bins.begin.assign(tiles + 1, 0);
-  for (const Part& part : parts) {
-    for (const auto& [t, e] : part.pairs) ++bins.begin[t + 1];
-    bins.tiles_tested += part.tested;
-    bins.tiles_culled += part.culled;
-  }
-  for (size_t t = 0; t < tiles; ++t) bins.begin[t + 1] += bins.begin[t];
-  bins.edges.resize(bins.begin[tiles]);
-  std::vector<uint32_t> cursor(bins.begin.begin(), bins.begin.end() - 1);
-  for (const Part& part : parts)
-    for (const auto& [t, e] : part.pairs) bins.edges[cursor[t]++] = e;
+    for (size_t t = 0; t < tiles; ++t) begin[t + 1] += begin[t];
+    items.resize(begin[tiles]);
+    std::vector<uint32_t> cursor(begin.begin(), begin.end() - 1);
+    for (const Part& part : parts)
+      for (const auto& [t, item] : part.pairs) items[cursor[t]++] = item;
+  };
+
+  binAll(
+      edges.edges.size(),
+      [&](size_t i) {
+        const Region region = builder.region(edges.edges[i], edges.triangles.data());
+        EdgeScreenTest& test = bins.tests[i];
+        test.region_count = region.plane_count;
+        for (int k = 0; k < region.plane_count; ++k)
+          toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
+        test.triangle_count = region.triangle_count;
+        for (int k = 0; k < region.triangle_count; ++k) {
+          const EdgeTriangle& t = *region.triangle[size_t(k)];
+          toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
+          test.light_above[k] = t.light_above;
+          test.weight[k] = t.light_above ? t.winding : -t.winding;
+        }
+        return region;
+      },
+      bins.begin, bins.edges);
+  binAll(
+      edges.cutting.size(), [&](size_t i) { return builder.region(edges.cutting[i]); },
+      bins.cutting_begin, bins.cutting);
   return bins;
 }
 

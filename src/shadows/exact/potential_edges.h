@@ -32,6 +32,9 @@ namespace penumbra {
 // since that triple product is minus the volume of (a, b, opposite, p). So the silhouette test
 // at a point is one plane evaluation per triangle, the same value that says whether the
 // triangle lies between the point and the light (docs/exact-soft-shadows.md).
+// Triangles whose plane cuts the light ball are not among an edge's triangles: the edge sum is
+// exact only for planes that miss the light (docs/exact-soft-shadows.md), so those are
+// CuttingTriangles, counted sample by sample.
 struct EdgeTriangle {
   uint32_t id;        // global triangle id (EyeBuffers::primitive)
   bool light_above;   // the light centre lies strictly on the positive side of its plane
@@ -45,14 +48,23 @@ struct PotentialEdge {
   uint32_t first_triangle, triangle_count;  // into PotentialEdges::triangles
 };
 
+// A triangle whose plane cuts the light ball (a wall through the light, a floor the light sinks
+// into): it can block rays toward the part of the light beyond its plane whichever side of it
+// the centre is on, so it is tested against each sample's segment instead.
+struct CuttingTriangle {
+  uint32_t id;
+  dvec3 v[3];
+};
+
 struct PotentialEdges {
-  std::vector<PotentialEdge> edges;
+  std::vector<PotentialEdge> edges;  // edges with at least one triangle not cutting the light
   std::vector<EdgeTriangle> triangles;
+  std::vector<CuttingTriangle> cutting;
   size_t scene_edges = 0;  // edges of the scene's meshes, for the ratio
 };
 
-// Every potential silhouette edge of the scene for `light` (radius > 0), in mesh and edge order.
-// Zero-area triangles never block a ray and are left out.
+// Every potential silhouette edge of the scene for `light` (radius > 0), in mesh and edge order,
+// and every triangle cutting the light. Zero-area triangles never block a ray and are left out.
 PotentialEdges potentialEdges(const Scene& scene, const Light& light);
 
 // Screen tiles of 2^level pixels and, per tile, the potential edges whose region of influence
@@ -69,6 +81,8 @@ struct EdgeBins {
   std::vector<uint32_t> edges;  // edge indices, ascending within a tile
   // Per potential edge, its planes for the per-pixel quick reject (edge_screen_test.h).
   std::vector<EdgeScreenTest> tests;
+  // The same for the triangles cutting the light (PotentialEdges::cutting): per tile, indices.
+  std::vector<uint32_t> cutting_begin, cutting;
   uint64_t tiles_tested = 0, tiles_culled = 0;
 };
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
