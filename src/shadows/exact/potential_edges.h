@@ -17,11 +17,8 @@
 #include <vector>
 
 #include "core/math.h"
-#include "core/view.h"
-#include "raster/depth_buffer.h"
 #include "scene/light.h"
 #include "scene/scene.h"
-#include "shadows/exact/edge_screen_test.h"
 
 namespace penumbra {
 
@@ -66,26 +63,5 @@ struct PotentialEdges {
 // Every potential silhouette edge of the scene for `light` (radius > 0), in mesh and edge order,
 // and every triangle cutting the light. Zero-area triangles never block a ray and are left out.
 PotentialEdges potentialEdges(const Scene& scene, const Light& light);
-
-// Screen tiles of 2^level pixels and, per tile, the potential edges whose region of influence
-// (the points from which the edge's projection can overlap the light) may hold a point of the
-// tile: the region lies inside the two planes through the edge tangent to the light and one
-// plane at each end, tested against the tile's pixel box and z-min/z-max (the 2004 paper's
-// tile culling, section 4). Conservative by `margin_footprints` pixel footprints, so a shaded
-// point that sits that far off the depth-buffer point (the oracle's ray origin does,
-// reference/ray_origin.h) still finds its edges.
-struct EdgeBins {
-  int level = 3;
-  int columns = 0, rows = 0;
-  std::vector<uint32_t> begin;  // per tile, into `edges`; one extra entry at the end
-  std::vector<uint32_t> edges;  // edge indices, ascending within a tile
-  // Per potential edge, its planes for the per-pixel quick reject (edge_screen_test.h).
-  std::vector<EdgeScreenTest> tests;
-  // The same for the triangles cutting the light (PotentialEdges::cutting): per tile, indices.
-  std::vector<uint32_t> cutting_begin, cutting;
-  uint64_t tiles_tested = 0, tiles_culled = 0;
-};
-EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
-                  const DepthBuffer& depth, int level, double margin_footprints);
 
 }  // namespace penumbra

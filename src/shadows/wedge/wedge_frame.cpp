@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/parallel.h"
+#include "core/pseudo_angle.h"
 #include "shadows/caster_volume.h"
 
 namespace penumbra {
@@ -89,16 +90,6 @@ dvec4 cross4(const dvec4& a, const dvec4& b, const dvec4& c) {
                -det3(dvec3(a.x, a.z, a.w), dvec3(b.x, b.z, b.w), dvec3(c.x, c.z, c.w)),
                det3(dvec3(a.x, a.y, a.w), dvec3(b.x, b.y, b.w), dvec3(c.x, c.y, c.w)),
                -det3(dvec3(a.x, a.y, a.z), dvec3(b.x, b.y, b.z), dvec3(c.x, c.y, c.z)));
-}
-
-// A number in [0, 4) that increases with the angle of (x, y) from the x axis, as atan2(y, x)
-// does (the same order), at a fraction of its cost: sorting the face vertices by atan2 is a
-// large part of the hull's time (bench/README.md).
-double pseudoAngle(double x, double y) {
-  const double sum = std::fabs(x) + std::fabs(y);
-  if (!(sum > 0.0)) return 0.0;
-  const double p = y / sum;  // in [-1, 1]
-  return x >= 0.0 ? (p >= 0.0 ? p : 4.0 + p) : 2.0 - p;
 }
 
 WedgeHull wedgeHull(const Wedge& w) {

@@ -1,0 +1,391 @@
+#include "shadows/exact/edge_bins.h"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+
+#include "core/parallel.h"
+
+namespace penumbra {
+
+namespace {
+
+constexpr size_t kChunk = 2048;  // items per work item
+
+// A world plane as a function of screen position and reversed-Z depth, E = value / w
+// (wedge_screen.h, toScreenPlane), in double.
+struct ScreenPlaneD {
+  double a, b, c, d;
+};
+
+// Triangles of an edge whose signs the tile test looks at; an edge with more is not culled by
+// its silhouette.
+constexpr int kMaxTileTriangles = 4;
+
+struct Region {
+  std::array<ScreenPlaneD, kMaxRegionPlanes> planes;
+  int plane_count = 0;
+  // The edge's triangles' planes, for the silhouette test (EdgeTriangle); triangle_count 0
+  // when there are more than kMaxTileTriangles.
+  std::array<ScreenPlaneD, kMaxTileTriangles> triangles;
+  std::array<const EdgeTriangle*, kMaxTileTriangles> triangle;
+  int triangle_count = 0;
+  int tx0 = 0, ty0 = 0, tx1 = -1, ty1 = -1;  // tiles of the screen box, inclusive
+};
+
+class RegionBuilder {
+ public:
+  RegionBuilder(const Light& light, const View& view, int level)
+      : c_(light.center), r_(light.radius), width_(view.width), height_(view.height),
+        level_(level), near_(0.5 * double(view.near_plane)) {
+    vp_ = dmat4(view.view_projection);
+    plane_to_clip_ = glm::transpose(glm::inverse(vp_));
+  }
+
+  Region region(const PotentialEdge& e, const EdgeTriangle* triangles) const {
+    Region region;
+    if (e.triangle_count <= uint32_t(kMaxTileTriangles)) {
+      for (uint32_t k = 0; k < e.triangle_count; ++k) {
+        const EdgeTriangle& t = triangles[e.first_triangle + k];
+        region.triangles[k] = screenPlane(t.normal, t.offset);
+        region.triangle[k] = &t;
+      }
+      region.triangle_count = int(e.triangle_count);
+    }
+    const dvec3 a = e.a, b = e.b;
+    const dvec3 u = glm::normalize(b - a);
+    // The two planes through the edge's line tangent to the ball: seen along the edge, the
+    // region is the cone of rays from the edge away from the light's disk.
+    const dvec3 ca = c_ - a;
+    const dvec3 c_perp = ca - glm::dot(ca, u) * u;
+    const double h = glm::length(c_perp);
+    if (h > r_ * (1.0 + 1e-9)) {
+      const dvec3 e1 = c_perp / h, e2 = glm::cross(u, e1);
+      const double sin_beta = r_ / h, cos_beta = std::sqrt(1.0 - sin_beta * sin_beta);
+      add(region, -sin_beta * e1 + cos_beta * e2, a);
+      add(region, -sin_beta * e1 - cos_beta * e2, a);
+    }
+    // At each end a plane with the edge on its inner side and the ball on its outer side: the
+    // shadow cone of the end point then lies inside, and so do the rays through every other
+    // point of the edge (docs/exact-soft-shadows.md).
+    endPlane(region, a, u);
+    endPlane(region, b, -u);
+    // Those planes leave a wide region for an edge whose line passes near the ball (no
+    // tangent planes and a half-space where it passes through), so the region is also bounded
+    // as that of the ball around the edge (pyramid).
+    pyramid(region, 0.5 * (a + b), 0.5 * glm::length(b - a));
+    const dvec3 ends[2] = {a, b};
+    screenBox(region, ends, 2);
+    return region;
+  }
+
+  // A triangle whose plane cuts the light: the points some segment from the light through it
+  // reaches, bounded by the pyramid around a ball holding the triangle.
+  Region region(const CuttingTriangle& t) const {
+    Region region;
+    const dvec3 m = (t.v[0] + t.v[1] + t.v[2]) / 3.0;
+    const double rho = std::max({glm::length(t.v[0] - m), glm::length(t.v[1] - m),
+                                 glm::length(t.v[2] - m)});
+    pyramid(region, m, rho);
+    screenBox(region, t.v, 3);
+    return region;
+  }
+
+  // True when no point of the tile's box (pixel centres [x0, x1] x [y0, y1], reversed-Z depth
+  // [z0, z1]), nor any point `margin` (in plane value over w) off one, can lie inside the
+  // region, or every such point sees the edge as no silhouette: each of its triangles' planes
+  // has one sign over the box and the signs cancel (exact_technique.cpp, the weight). A point
+  // on one of the triangles is on its plane, so the visible triangle, which the pixels leave
+  // out of the weight, never has a sign here.
+  static bool culled(const Region& region, double x0, double x1, double y0, double y1, double z0,
+                     double z1, double margin) {
+    for (int i = 0; i < region.plane_count; ++i) {
+      if (planeMax(region.planes[size_t(i)], x0, x1, y0, y1, z0, z1) < -margin) return true;
+    }
+    if (region.triangle_count == 0) return false;
+    int weight = 0;
+    for (int k = 0; k < region.triangle_count; ++k) {
+      const ScreenPlaneD& p = region.triangles[size_t(k)];
+      int sign;
+      if (-planeMax(negated(p), x0, x1, y0, y1, z0, z1) > margin) {
+        sign = 1;
+      } else if (planeMax(p, x0, x1, y0, y1, z0, z1) < -margin) {
+        sign = -1;
+      } else {
+        return false;
+      }
+      const EdgeTriangle& t = *region.triangle[size_t(k)];
+      if ((sign > 0) == t.light_above) continue;
+      weight -= t.winding * sign;
+    }
+    return weight == 0;
+  }
+
+ private:
+  // The region of anything inside a ball of radius rho around m: every segment from the light
+  // through it passes through the ball, so the region lies in the cone of the two balls'
+  // internal tangents, apex where they cross, O = c + (m - c) r / (r + rho), half-angle
+  // asin((r + rho) / |m - c|); four planes through O circumscribe it. None when the ball
+  // comes near the light.
+  void pyramid(Region& region, const dvec3& m, double rho) const {
+    const double distance = glm::length(m - c_);
+    const double sin_gamma = (r_ + rho) / distance * (1.0 + 1e-9);
+    if (!(sin_gamma < 0.9)) return;
+    const dvec3 d = (m - c_) / distance;
+    const dvec3 apex = c_ + (m - c_) * (r_ / (r_ + rho));
+    const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
+    const dvec3 helper = std::fabs(d.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+    const dvec3 t1 = glm::normalize(glm::cross(d, helper)), t2 = glm::cross(d, t1);
+    for (const dvec3& t : {t1, -t1, t2, -t2}) add(region, sin_gamma * d - cos_gamma * t, apex);
+  }
+
+  // Largest value over the box, at the corner the gradient points to. (Its rounding in double
+  // is some 1e-16 of the terms, far inside the margins the callers allow.)
+  static double planeMax(const ScreenPlaneD& p, double x0, double x1, double y0, double y1,
+                         double z0, double z1) {
+    const double x = p.a >= 0 ? x1 : x0, y = p.b >= 0 ? y1 : y0, z = p.c >= 0 ? z1 : z0;
+    return p.a * x + p.b * y + p.c * z + p.d;
+  }
+  static ScreenPlaneD negated(const ScreenPlaneD& p) { return {-p.a, -p.b, -p.c, -p.d}; }
+
+  ScreenPlaneD screenPlane(const dvec3& n, double offset) const {
+    const dvec4 q = plane_to_clip_ * dvec4(n, offset);
+    return ScreenPlaneD{2.0 * q.x / width_, -2.0 * q.y / height_, q.z, q.w - q.x + q.y};
+  }
+  void add(Region& region, const dvec3& n, const dvec3& through) const {
+    region.planes[size_t(region.plane_count++)] = screenPlane(n, -glm::dot(n, through));
+  }
+
+  void endPlane(Region& region, const dvec3& end, const dvec3& inward) const {
+    const dvec3 away = end - c_;
+    const double distance = glm::length(away);
+    if (!(distance > r_ * (1.0 + 1e-9))) return;
+    const dvec3 w = away / distance;
+    const double sin_alpha = r_ / distance, cos_alpha = std::sqrt(1.0 - sin_alpha * sin_alpha);
+    // Need dot(n, inward) >= 0 and dot(n, w) >= sin_alpha (the end's shadow cone inside).
+    if (glm::dot(inward, w) >= sin_alpha) {
+      add(region, inward, end);
+      return;
+    }
+    const dvec3 v = inward - glm::dot(inward, w) * w;
+    const double v_length = glm::length(v);
+    if (!(v_length > 1e-12)) return;
+    const dvec3 n = sin_alpha * w + cos_alpha * (v / v_length);
+    if (glm::dot(n, inward) >= 0.0) add(region, n, end);
+  }
+
+  // The screen box of the region's part in front of the eye: the region lies in the convex
+  // hull of the edge's (or triangle's) corners and the shadow cones of the corners (a point
+  // x + t (x - q) of the shadow is the same blend of the corners' shadow points), each cone
+  // inside a square pyramid of four directions. Vertices of the hull cut at w = near are the end points in front of it and
+  // the crossings of its edges with it; directions away from the eye add their vanishing
+  // points. A cone with directions both toward and away from the eye reaches the screen's
+  // border, so the box is the whole screen then.
+  void screenBox(Region& region, const dvec3* ends, int end_count) const {
+    std::array<dvec4, 3> points;
+    std::array<dvec4, 12> directions;
+    bool full = false;
+    for (int k = 0; k < end_count && !full; ++k) {
+      const dvec3 end = ends[k];
+      points[size_t(k)] = vp_ * dvec4(end, 1.0);
+      const dvec3 away = end - c_;
+      const double distance = glm::length(away);
+      if (!(distance > r_ * (1.0 + 1e-9))) {
+        full = true;
+        break;
+      }
+      const dvec3 w = away / distance;
+      const double sin_alpha = r_ / distance;
+      const double tan_alpha = sin_alpha / std::sqrt(1.0 - sin_alpha * sin_alpha);
+      const dvec3 helper = std::fabs(w.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+      const dvec3 t1 = glm::normalize(glm::cross(w, helper)), t2 = glm::cross(w, t1);
+      // A little wider than the circumscribed pyramid, for rounding.
+      const double spread = tan_alpha * (1.0 + 1e-6) + 1e-9;
+      for (int s = 0; s < 4; ++s) {
+        const dvec3 d = w + spread * ((s & 1 ? 1.0 : -1.0) * t1 + (s & 2 ? 1.0 : -1.0) * t2);
+        directions[size_t(k * 4 + s)] = vp_ * dvec4(d, 0.0);
+      }
+    }
+    const int direction_count = 4 * end_count;
+    int positive = 0, negative = 0;
+    if (!full) {
+      for (int k = 0; k < direction_count; ++k) {
+        positive += directions[size_t(k)].w > 0.0;
+        negative += directions[size_t(k)].w < 0.0;
+      }
+      full = positive != direction_count && negative != direction_count;
+    }
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    auto extend = [&](const dvec4& clip) {
+      const double x = clip.x / clip.w, y = clip.y / clip.w;
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
+    };
+    auto crossing = [&](const dvec4& from, const dvec4& step) {
+      // from + t step at w = near, for t >= 0 (t <= 1 for a segment, checked by the caller).
+      const double t = (near_ - from.w) / step.w;
+      extend(from + t * step);
+    };
+    if (!full) {
+      for (int k = 0; k < end_count; ++k) {
+        const dvec4& p = points[size_t(k)];
+        if (p.w >= near_) extend(p);
+        for (int j = 0; j < direction_count; ++j) {
+          const dvec4& d = directions[size_t(j)];
+          if ((p.w < near_ && d.w > 0.0) || (p.w > near_ && d.w < 0.0)) crossing(p, d);
+        }
+        for (int j = k + 1; j < end_count; ++j) {
+          const dvec4& q = points[size_t(j)];
+          if ((p.w < near_) != (q.w < near_)) crossing(p, q - p);
+        }
+      }
+      if (positive == direction_count)
+        for (int j = 0; j < direction_count; ++j) extend(directions[size_t(j)]);
+      if (x0 > x1) return;  // nothing in front of the eye
+    }
+    const int tile = 1 << level_;
+    const int columns = (width_ + tile - 1) / tile, rows = (height_ + tile - 1) / tile;
+    if (full) {
+      region.tx0 = region.ty0 = 0;
+      region.tx1 = columns - 1;
+      region.ty1 = rows - 1;
+      return;
+    }
+    // NDC to pixels (y down), one pixel of slack, clamped before the conversion to int.
+    const double px0 = (x0 + 1.0) * 0.5 * width_ - 1.0, px1 = (x1 + 1.0) * 0.5 * width_ + 1.0;
+    const double py0 = (1.0 - y1) * 0.5 * height_ - 1.0, py1 = (1.0 - y0) * 0.5 * height_ + 1.0;
+    if (px1 < 0.0 || py1 < 0.0 || px0 >= width_ || py0 >= height_) return;
+    region.tx0 = int(std::max(0.0, px0)) / tile;
+    region.ty0 = int(std::max(0.0, py0)) / tile;
+    region.tx1 = std::min(int(std::min(px1, double(width_ - 1))) / tile, columns - 1);
+    region.ty1 = std::min(int(std::min(py1, double(height_ - 1))) / tile, rows - 1);
+  }
+
+  dvec3 c_;
+  double r_;
+  int width_, height_, level_;
+  double near_;
+  dmat4 vp_, plane_to_clip_;
+};
+
+}  // namespace
+
+EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
+                  const DepthBuffer& depth, int level, double margin_footprints) {
+  EdgeBins bins;
+  bins.level = level;
+  const int tile = 1 << level;
+  bins.columns = (view.width + tile - 1) / tile;
+  bins.rows = (view.height + tile - 1) / tile;
+  const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
+  const int coarse_level = std::min(level + 3, kMaxTileLevel);
+  // A point d world units off its depth-buffer point changes a plane value by at most d, and
+  // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
+  const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
+  const double margin = margin_footprints * pixel_angle;
+  const RegionBuilder builder(light, view, level);
+  bins.tests.resize(edges.edges.size());
+  // Float evaluation error of E at any pixel centre of the image with z in [0, 1]: four
+  // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp).
+  const double x_max = view.width + 0.5, y_max = view.height + 0.5;
+  auto toFloat = [&](const ScreenPlaneD& p, float out[4], float& plane_margin) {
+    out[0] = float(p.a);
+    out[1] = float(p.b);
+    out[2] = float(p.c);
+    out[3] = float(p.d);
+    plane_margin = float(margin + 8.0 * FLT_EPSILON *
+                                      (std::fabs(p.a) * x_max + std::fabs(p.b) * y_max +
+                                       std::fabs(p.c) + std::fabs(p.d)));
+  };
+
+  struct Part {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, item)
+    uint64_t tested = 0, culled = 0;
+  };
+  // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
+  // item order within a tile: chunks in order, then a counting sort by tile).
+  auto binAll = [&](size_t count, const auto& regionOf, std::vector<uint32_t>& begin,
+                    std::vector<uint32_t>& items) {
+    const size_t chunks = (count + kChunk - 1) / kChunk;
+    std::vector<Part> parts(chunks);
+    parallelFor(chunks, [&](size_t chunk) {
+      Part& part = parts[chunk];
+      const size_t end = std::min(count, (chunk + 1) * kChunk);
+      for (size_t i = chunk * kChunk; i < end; ++i) {
+        const Region region = regionOf(i);
+        // A quadtree over the culling tiles, from tiles 8x8 times larger down: a shadow's
+        // streak toward its vanishing point crosses a screen box that is mostly empty for it.
+        auto culledAt = [&](int k, int cx, int cy) {
+          const TileDepthRange& r = depth.tileRange(k);
+          const int size = 1 << k;
+          if (cx * size >= view.width || cy * size >= view.height) return true;
+          const float zmax = r.zmax.at(cx, cy);
+          if (!(zmax > 0.0f)) return true;  // background only
+          ++part.tested;
+          const double x0 = cx * size + 0.5, x1 = std::min(cx * size + size, view.width) - 0.5;
+          const double y0 = cy * size + 0.5, y1 = std::min(cy * size + size, view.height) - 0.5;
+          const bool culled =
+              RegionBuilder::culled(region, x0, x1, y0, y1, r.zmin.at(cx, cy), zmax, margin);
+          part.culled += culled;
+          return culled;
+        };
+        auto visit = [&](auto&& self, int k, int cx, int cy) -> void {
+          const int shift = k - level;  // culling tiles of this tile: [cx << shift, ...)
+          if ((cx + 1) << shift <= region.tx0 || cx << shift > region.tx1 ||
+              (cy + 1) << shift <= region.ty0 || cy << shift > region.ty1)
+            return;
+          if (culledAt(k, cx, cy)) return;
+          if (k == level) {
+            part.pairs.emplace_back(uint32_t(cy * bins.columns + cx), uint32_t(i));
+            return;
+          }
+          for (int child = 0; child < 4; ++child)
+            self(self, k - 1, 2 * cx + (child & 1), 2 * cy + (child >> 1));
+        };
+        const int shift = coarse_level - level;
+        for (int cy = region.ty0 >> shift; cy <= region.ty1 >> shift; ++cy)
+          for (int cx = region.tx0 >> shift; cx <= region.tx1 >> shift; ++cx)
+            visit(visit, coarse_level, cx, cy);
+      }
+    });
+    begin.assign(tiles + 1, 0);
+    for (const Part& part : parts) {
+      for (const auto& [t, item] : part.pairs) ++begin[t + 1];
+      bins.tiles_tested += part.tested;
+      bins.tiles_culled += part.culled;
+    }
+    for (size_t t = 0; t < tiles; ++t) begin[t + 1] += begin[t];
+    items.resize(begin[tiles]);
+    std::vector<uint32_t> cursor(begin.begin(), begin.end() - 1);
+    for (const Part& part : parts)
+      for (const auto& [t, item] : part.pairs) items[cursor[t]++] = item;
+  };
+
+  binAll(
+      edges.edges.size(),
+      [&](size_t i) {
+        const Region region = builder.region(edges.edges[i], edges.triangles.data());
+        EdgeScreenTest& test = bins.tests[i];
+        test.region_count = region.plane_count;
+        for (int k = 0; k < region.plane_count; ++k)
+          toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
+        test.triangle_count = region.triangle_count;
+        for (int k = 0; k < region.triangle_count; ++k) {
+          const EdgeTriangle& t = *region.triangle[size_t(k)];
+          toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
+          test.light_above[k] = t.light_above;
+          test.weight[k] = t.light_above ? t.winding : -t.winding;
+        }
+        return region;
+      },
+      bins.begin, bins.edges);
+  binAll(
+      edges.cutting.size(), [&](size_t i) { return builder.region(edges.cutting[i]); },
+      bins.cutting_begin, bins.cutting);
+  return bins;
+}
+
+}  // namespace penumbra

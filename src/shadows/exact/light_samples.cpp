@@ -1,0 +1,63 @@
+#include "shadows/exact/light_samples.h"
+
+#include <algorithm>
+
+#include "core/pseudo_angle.h"
+
+namespace penumbra {
+
+SampleSet makeSampleSet(int n, uint64_t seed) {
+  SampleSet set;
+  set.n = n;
+  set.padded = (size_t(n) + kSampleBlock - 1) / kSampleBlock * kSampleBlock;
+  std::vector<vec2> square(static_cast<size_t>(n));
+  fixedSamples(n, seed, square.data());
+  for (int i = 0; i < n; ++i) set.disk.push_back(concentricDisk(square[size_t(i)]));
+  auto angle = [](const DiskPoint& d) { return pseudoAngle(d.cos_phi, d.sin_phi); };
+  std::stable_sort(set.disk.begin(), set.disk.end(),
+                   [&](const DiskPoint& a, const DiskPoint& b) { return angle(a) < angle(b); });
+  set.radius2.assign(set.padded, 0.0f);
+  set.cos_phi.assign(set.padded, 1.0f);
+  set.sin_phi.assign(set.padded, 0.0f);
+  for (int i = 0; i < n; ++i) {
+    const DiskPoint& d = set.disk[size_t(i)];
+    set.radius2[size_t(i)] = d.radius * d.radius;
+    set.cos_phi[size_t(i)] = d.cos_phi;
+    set.sin_phi[size_t(i)] = d.sin_phi;
+  }
+  for (size_t b = 0; b < set.padded; b += kSampleBlock) {
+    set.block_first.push_back(angle(set.disk[b]));
+    set.block_last.push_back(angle(set.disk[std::min(size_t(n), b + kSampleBlock) - 1]));
+  }
+  return set;
+}
+
+SampleRuns sampleRuns(const SampleSet& set, double from, double to) {
+  // Far wider than the float error of the kernel's sector lines (some 1e-7 relative); the
+  // pseudo-angle grows at least half as fast as the angle.
+  constexpr double kSlack = 1e-5;
+  from -= kSlack;
+  to += kSlack;
+  // Blocks [first block whose last sample >= lo, first block whose first sample > hi).
+  auto run = [&](double lo, double hi, uint32_t& begin, uint32_t& end) {
+    const size_t b = size_t(std::lower_bound(set.block_last.begin(), set.block_last.end(), lo) -
+                            set.block_last.begin());
+    const size_t e = size_t(std::upper_bound(set.block_first.begin(), set.block_first.end(), hi) -
+                            set.block_first.begin());
+    begin = uint32_t(b * kSampleBlock);
+    end = uint32_t(std::max(b, e) * kSampleBlock);
+  };
+  SampleRuns runs;
+  if (from < 0.0) {
+    run(0.0, to, runs.begin[0], runs.end[0]);
+    run(from + 4.0, 4.0, runs.begin[1], runs.end[1]);
+  } else if (to >= 4.0) {
+    run(from, 4.0, runs.begin[0], runs.end[0]);
+    run(0.0, to - 4.0, runs.begin[1], runs.end[1]);
+  } else {
+    run(from, to, runs.begin[0], runs.end[0]);
+  }
+  return runs;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,146 @@
+#include "shadows/exact/pixel_edges.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/pseudo_angle.h"
+
+namespace penumbra {
+
+bool ClearOfLight::decide(uint32_t primitive) const {
+  const auto [m, t] = scene_->locateTriangle(primitive);
+  const Mesh& mesh = scene_->meshes[m];
+  const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
+  dvec3 n = glm::cross(b - a, c - a);
+  const double length = glm::length(n);
+  const double eye_side = glm::dot(n, eye_ - a);
+  bool clear = false;
+  if (length > 0.0 && eye_side != 0.0 && std::isfinite(eye_side)) {
+    if (eye_side < 0.0) n = -n;
+    clear = glm::dot(n, centre_ - a) / length > radius_ * (1.0 + 1e-4);
+  }
+  known_[primitive].store(clear ? kClear : kNotClear, std::memory_order_relaxed);
+  return clear;
+}
+
+// Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
+bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t) {
+  const dvec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];
+  const dvec3 q = glm::cross(d, e2);
+  const double det = glm::dot(e1, q);
+  if (det == 0.0) return false;  // the segment lies in the triangle's plane: crosses nothing
+  const double inv = 1.0 / det;
+  const dvec3 s = o - t.v[0];
+  const double u = glm::dot(s, q) * inv;
+  if (u < 0.0 || u > 1.0) return false;
+  const dvec3 r = glm::cross(s, e1);
+  const double v = glm::dot(d, r) * inv;
+  if (v < 0.0 || u + v > 1.0) return false;
+  const double hit = glm::dot(e2, r) * inv;
+  return hit > 0.0 && hit < t_max;
+}
+// Sets up the frame of a pixel; false when its visibility is already known (`known`).
+bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
+                const RayOrigins& origins, const Light& light, PixelFrame& f, float& known) {
+  const dvec3 c(light.center);
+  const double r = light.radius;
+  f.ready = true;
+  f.primitive = primitive;
+  f.start = origins.start(x, y, depth, primitive);
+  // A point inside the light sees all of it (as the oracle has it).
+  if (glm::length(c - f.start.origin) <= r) {
+    known = 1.0f;
+    return false;
+  }
+  // The oracle's rays start at the float origin; every test here is made from that point.
+  f.p = dvec3(vec3(f.start.origin));
+  f.cone = makeSphereCone(f.start.origin, c, r);
+  f.axis = dvec3(f.cone.axis);
+  f.tangent = dvec3(f.cone.tangent);
+  f.bitangent = dvec3(f.cone.bitangent);
+  const double omc = f.cone.one_minus_cos_max;
+  f.light_radius = std::sqrt(omc * (2.0 - omc)) / (1.0 - omc) * (1.0 + 1e-5);
+  f.z_min = 1e-7 * glm::length(c - f.p);
+  // The stencil counted the visible triangle exactly when the centre is behind it.
+  f.centre_count = stencil - (f.start.intoSurface(c) ? 1 : 0);
+  f.reach = 0;
+  return true;
+}
+// The exact test of one edge at one point: false when the edge changes none of its samples,
+// else `out` says which samples it changes and by how much.
+bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
+                 const SampleSet& samples, PixelEdge& pixel_edge, int32_t& weight_out) {
+  SampleEdge& out = pixel_edge.edge;
+  const dvec3& p = f.p;
+  dvec3 a = e.a - p, b = e.b - p;
+  double za = glm::dot(a, f.axis), zb = glm::dot(b, f.axis);
+  if (za <= f.z_min && zb <= f.z_min) return false;  // behind the point: no ray toward the light
+  // Silhouette from p: the signed number of the edge's triangles on each side of the plane
+  // through p and the edge, from each triangle's own plane (EdgeTriangle). Left out: the
+  // visible triangle, and triangles whose plane has p and the light centre on one side (no
+  // segment from p to the light crosses them while the plane misses the light; the stencil
+  // does not count them at the centre either).
+  int32_t weight = 0;
+  for (uint32_t k = 0; k < e.triangle_count; ++k) {
+    const EdgeTriangle& t = triangles[e.first_triangle + k];
+    if (t.id == f.primitive) continue;
+    const double at_p = glm::dot(t.normal, p) + t.offset;
+    if ((at_p > 0.0) == t.light_above) continue;
+    weight -= t.winding * ((at_p > 0.0) - (at_p < 0.0));
+  }
+  if (weight == 0) return false;
+  // Clip to z >= z_min: the part behind projects outside the light.
+  if (za < f.z_min) {
+    a += (b - a) * ((f.z_min - za) / (zb - za));
+    za = f.z_min;
+  } else if (zb < f.z_min) {
+    b += (a - b) * ((f.z_min - zb) / (za - zb));
+    zb = f.z_min;
+  }
+  const dvec2 a2(glm::dot(a, f.tangent) / za, glm::dot(a, f.bitangent) / za);
+  const dvec2 b2(glm::dot(b, f.tangent) / zb, glm::dot(b, f.bitangent) / zb);
+  // Distance from the centre (0, 0) to the projected segment: beyond the light, no sample.
+  const dvec2 ab = b2 - a2;
+  const double ab2 = glm::dot(ab, ab);
+  const double t = ab2 > 0.0 ? std::clamp(-glm::dot(a2, ab) / ab2, 0.0, 1.0) : 0.0;
+  if (glm::length(a2 + t * ab) > f.light_radius) return false;
+  // Sector lines through the centre and each projected end: n_a = axis x a gives the value
+  // -a.B x + a.T y, up to the positive factor 1 / z_a. Normalised in double, then rounded,
+  // the same way for every edge sharing the end, so the half-open rule is watertight.
+  auto sectorLine = [&f](const dvec3& v, float line[2]) {
+    const double s = -glm::dot(v, f.bitangent), u = glm::dot(v, f.tangent);
+    const double scale = std::max(std::fabs(s), std::fabs(u));
+    line[0] = float(s / scale);
+    line[1] = float(u / scale);
+    return dvec2(s / scale, u / scale);
+  };
+  const dvec2 la = sectorLine(a, out.sector_a);
+  const dvec2 lb = sectorLine(b, out.sector_b);
+  const double a_at_b = la.x * b2.x + la.y * b2.y;
+  const double b_at_a = lb.x * a2.x + lb.y * a2.y;
+  if (a_at_b == 0.0 || b_at_a == 0.0) return false;  // the centre on the edge's line: a tie
+  out.a_side = a_at_b > 0.0;
+  out.b_side = b_at_a > 0.0;
+  // The edge's line: the plane through p and the edge, n . (T x + B y + axis).
+  const dvec3 n = glm::cross(a, b);
+  const dvec3 l(glm::dot(n, f.tangent), glm::dot(n, f.bitangent), glm::dot(n, f.axis));
+  const double l_scale = std::max({std::fabs(l.x), std::fabs(l.y), std::fabs(l.z)});
+  out.line[0] = float(l.x / l_scale);
+  out.line[1] = float(l.y / l_scale);
+  out.line[2] = float(l.z / l_scale);
+  out.centre_side = out.line[2] >= 0.0f;
+  // Crossing from the centre's side onto the other: the triangles on that side (+1 each) are
+  // entered, those on the centre's side (-1 each) left.
+  out.delta = out.centre_side ? -weight : weight;
+  weight_out = weight;
+  // The sector's angles: the shorter way round from one projected end to the other.
+  const double angle_a = pseudoAngle(a2.x, a2.y), angle_b = pseudoAngle(b2.x, b2.y);
+  double turn = angle_b - angle_a;
+  if (turn > 2.0) turn -= 4.0;
+  if (turn <= -2.0) turn += 4.0;
+  pixel_edge.runs = turn >= 0.0 ? sampleRuns(samples, angle_a, angle_a + turn)
+                                : sampleRuns(samples, angle_b, angle_b - turn);
+  return true;
+}
+
+}  // namespace penumbra
