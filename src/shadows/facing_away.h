@@ -30,14 +30,22 @@ class FacingAway {
   FacingAway(const Scene& scene, const Light& light, const View& view)
       : scene_(&scene), eye_(view.eye), centre_(light.center), radius_(light.radius),
         known_(scene.triangleCount()) {}
-  bool operator()(uint32_t primitive) const {
-    const uint8_t known = known_[primitive].load(std::memory_order_relaxed);
-    return known != kUnknown ? known == kAway : decide(primitive);
-  }
+  bool operator()(uint32_t primitive) const { return state(primitive) == kAway; }
+  // The opposite case, with a margin: the whole light lies in front of the triangle, on the
+  // side the eye sees, farther from its plane than radius * (1 + kClearMargin) (for a point
+  // light, strictly in front). No sample of the light is behind the surface then, whatever the
+  // point on it the rays start from (RayStart::intoSurface), which the exact soft shadow
+  // volumes use to skip setting up pixels no edge reaches.
+  bool clearOfLight(uint32_t primitive) const { return state(primitive) == kClear; }
+  static constexpr double kClearMargin = 1e-4;
 
  private:
-  static constexpr uint8_t kUnknown = 0, kLit = 1, kAway = 2;
-  bool decide(uint32_t primitive) const;
+  static constexpr uint8_t kUnknown = 0, kAway = 1, kAcross = 2, kClear = 3;
+  uint8_t state(uint32_t primitive) const {
+    const uint8_t known = known_[primitive].load(std::memory_order_relaxed);
+    return known != kUnknown ? known : decide(primitive);
+  }
+  uint8_t decide(uint32_t primitive) const;
 
   const Scene* scene_;
   dvec3 eye_, centre_;

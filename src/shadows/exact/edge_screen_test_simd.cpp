@@ -26,24 +26,21 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
     const auto sx = hn::Load(df, block.sx + i);
     const auto sy = hn::Load(df, block.sy + i);
     const auto z = hn::Load(df, block.z + i);
+    // ((a sx + b sy) + c z) + d, as the scalar twin.
+    auto planeAt = [&](const float* p) {
+      return hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), sx),
+                                     hn::Mul(hn::Set(df, p[1]), sy)),
+                             hn::Mul(hn::Set(df, p[2]), z)),
+                     hn::Set(df, p[3]));
+    };
     auto keep = hn::FirstN(df, lanes);  // all true
-    for (int k = 0; k < t.region_count; ++k) {
-      const float* p = t.region[k];
-      const auto e = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), sx),
-                                             hn::Mul(hn::Set(df, p[1]), sy)),
-                                     hn::Mul(hn::Set(df, p[2]), z)),
-                             hn::Set(df, p[3]));
-      keep = hn::And(keep, hn::Ge(e, hn::Set(df, -t.region_margin[k])));
-    }
+    for (int k = 0; k < t.region_count; ++k)
+      keep = hn::And(keep, hn::Ge(planeAt(t.region[k]), hn::Set(df, -t.region_margin[k])));
     if (t.triangle_count > 0) {
       auto unknown = hn::FirstN(df, 0);  // all false
       auto weight = hn::Zero(di);
       for (int k = 0; k < t.triangle_count; ++k) {
-        const float* p = t.triangle[k];
-        const auto e = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), sx),
-                                               hn::Mul(hn::Set(df, p[1]), sy)),
-                                       hn::Mul(hn::Set(df, p[2]), z)),
-                               hn::Set(df, p[3]));
+        const auto e = planeAt(t.triangle[k]);
         const auto positive = hn::Gt(e, hn::Set(df, t.triangle_margin[k]));
         const auto negative = hn::Lt(e, hn::Set(df, -t.triangle_margin[k]));
         unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));

@@ -94,18 +94,19 @@ class ExactSoftShadows final : public PreparedTechnique {
 float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
                                     const std::vector<const CuttingTriangle*>& cutting,
                                     const Light& light, bool simd, Scratch& scratch) const {
-  if (!f.ready) return f.stencil == 0 ? 1.0f : 0.0f;  // ClearOfLight, and no edge
+  if (!f.ready) return f.stencil == 0 ? 1.0f : 0.0f;  // clear of the light, and no edge
   const dvec3 c(light.center);
   const double r = light.radius;
   const int n = samples_.n;
   // Samples behind the visible triangle's plane are blocked by it; only where the light
-  // reaches across that plane does any sample need the test (the oracle's, sample by sample).
+  // reaches across that plane does any sample need the test (the oracle's, sample by sample);
+  // the margin is FacingAway's, which lets pixels no edge reaches skip all of this.
   int into_count = 0;
   bool any_into = false;
   const double normal_length = glm::length(f.start.plane_normal);
   if (normal_length > 0.0 &&
       glm::dot(f.start.plane_normal, c - f.start.plane_point) / normal_length <=
-          r * (1.0 + 1e-4)) {
+          r * (1.0 + FacingAway::kClearMargin)) {
     any_into = true;
     for (int i = 0; i < n; ++i) {
       const ConeSample s = sampleSphereCone(f.cone, samples_.disk[size_t(i)]);
@@ -164,19 +165,12 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   PENUMBRA_CHECK(width == view.width && height == view.height,
                  "eye buffers are {}x{} but the view is {}x{}", width, height, view.width,
                  view.height);
-  TechniqueResult result;
-  Stats& stats = result.stats;
   ShadowStencilOptions stencil_options;
   stencil_options.simd = context.simd;
-  if (light.radius == 0.0f) {
-    // A point light: the hard shadow volume, bit for bit.
-    const Image<int32_t> stencil =
-        shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
-    PassTimer timer(stats, "resolve");
-    resolveVisibility(scene_, light, view, eye, result.visibility,
-                      [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
-    return result;
-  }
+  // A point light: the hard shadow volume, bit for bit.
+  if (light.radius == 0.0f) return hardShadowVolumes(scene_, light, view, eye, stencil_options);
+  TechniqueResult result;
+  Stats& stats = result.stats;
   // Two-sided casters: the stencil counts every triangle between the point and the centre.
   stencil_options.policy = CasterPolicy::TwoSided;
   const Image<int32_t> stencil =
@@ -202,7 +196,6 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     PassTimer timer(stats, "samples");
     const RayOrigins origins(scene_, view);
     const FacingAway away(scene_, light, view);
-    const ClearOfLight clear(scene_, light, view);
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
     const int tile = 1 << bins.level;
     std::vector<TileWork> tile_work(tiles);
@@ -238,7 +231,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           f.ready = false;
           f.stencil = stencil.at(x, y);
           f.primitive = id;
-          if (!clear(id)) {
+          if (!away.clearOfLight(id)) {
             float known = 0.0f;
             if (!setupPixel(x, y, block.z[i], id, f.stencil, origins, light, f, known)) {
               soft.at(x, y) = known;

@@ -7,22 +7,6 @@
 
 namespace penumbra {
 
-bool ClearOfLight::decide(uint32_t primitive) const {
-  const auto [m, t] = scene_->locateTriangle(primitive);
-  const Mesh& mesh = scene_->meshes[m];
-  const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
-  dvec3 n = glm::cross(b - a, c - a);
-  const double length = glm::length(n);
-  const double eye_side = glm::dot(n, eye_ - a);
-  bool clear = false;
-  if (length > 0.0 && eye_side != 0.0 && std::isfinite(eye_side)) {
-    if (eye_side < 0.0) n = -n;
-    clear = glm::dot(n, centre_ - a) / length > radius_ * (1.0 + 1e-4);
-  }
-  known_[primitive].store(clear ? kClear : kNotClear, std::memory_order_relaxed);
-  return clear;
-}
-
 // Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
 bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t) {
   const dvec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];

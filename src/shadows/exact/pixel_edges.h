@@ -1,7 +1,6 @@
 #pragma once
 // One pixel of the exact soft shadow volumes: its shaded point and light frame, and the exact
 // test of one potential silhouette edge there (exact_technique.cpp says how they add up).
-#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -21,7 +20,8 @@ namespace penumbra {
 // A visible point and the light as it sees it: the oracle's ray origin and sample cone.
 struct PixelFrame {
   // Set up only once an edge may matter (setupPixel); until then all that is known is the
-  // stencil, and the pixel's triangle has the whole light in front of it (ClearOfLight).
+  // stencil, and the pixel's triangle has the whole light in front of it
+  // (FacingAway::clearOfLight).
   bool ready = false;
   int32_t stencil = 0;
   uint32_t primitive = kNoPrimitive;  // the visible triangle, left out of every count
@@ -48,30 +48,6 @@ inline constexpr double kTfarShrink = 1e-6;
 // Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
 bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t);
 
-// Per scene triangle, decided once per light and remembered (as FacingAway): is the whole light
-// strictly in front of it, on the side the eye sees, by more than the margin finishPixel uses
-// to look for samples behind the surface? For such a pixel RayStart::intoSurface is false for
-// the centre and every sample whatever the origin, so a pixel that no edge reaches is lit
-// exactly when the stencil is 0, and needs no ray origin at all.
-class ClearOfLight {
- public:
-  ClearOfLight(const Scene& scene, const Light& light, const View& view)
-      : scene_(&scene), eye_(view.eye), centre_(light.center), radius_(light.radius),
-        known_(scene.triangleCount()) {}
-  bool operator()(uint32_t primitive) const {
-    const uint8_t known = known_[primitive].load(std::memory_order_relaxed);
-    return known != kUnknown ? known == kClear : decide(primitive);
-  }
-
- private:
-  static constexpr uint8_t kUnknown = 0, kClear = 1, kNotClear = 2;
-  bool decide(uint32_t primitive) const;
-
-  const Scene* scene_;
-  dvec3 eye_, centre_;
-  double radius_;
-  mutable std::vector<std::atomic<uint8_t>> known_;
-};
 // Sets up the frame of a pixel; false when its visibility is already known (`known`).
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
                 const RayOrigins& origins, const Light& light, PixelFrame& f, float& known);

@@ -3,6 +3,7 @@
 #include "core/timer.h"
 #include "raster/rasterizer.h"
 #include "shadows/caster_volume.h"
+#include "shadows/facing_away.h"
 
 namespace penumbra {
 namespace {
@@ -51,6 +52,17 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
     rasterizeStencil(polygons, eye.depth, stencil, stats, stencil_options);
   }
   return stencil;
+}
+
+TechniqueResult hardShadowVolumes(const Scene& scene, const Light& light, const View& view,
+                                  const EyeBuffers& eye, const ShadowStencilOptions& options) {
+  TechniqueResult result;
+  const Image<int32_t> stencil =
+      shadowStencil(scene, light.center, view, eye, options, result.stats);
+  PassTimer timer(result.stats, "resolve");
+  resolveVisibility(scene, light, view, eye, result.visibility,
+                    [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
+  return result;
 }
 
 }  // namespace penumbra

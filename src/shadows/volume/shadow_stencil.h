@@ -10,6 +10,7 @@
 #include "raster/depth_buffer.h"
 #include "scene/scene.h"
 #include "shadows/silhouette.h"
+#include "shadows/technique.h"
 #include "shadows/volume_options.h"
 
 namespace penumbra {
@@ -25,5 +26,11 @@ struct ShadowStencilOptions {
 Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View& view,
                              const EyeBuffers& eye, const ShadowStencilOptions& options,
                              Stats& stats);
+
+// The hard shadow volume's answer for a point light at the light's centre: lit where the stencil
+// is 0, unlit where the visible triangle faces away (facing_away.h), 1 on the background.
+// Adds the pass "resolve".
+TechniqueResult hardShadowVolumes(const Scene& scene, const Light& light, const View& view,
+                                  const EyeBuffers& eye, const ShadowStencilOptions& options);
 
 }  // namespace penumbra

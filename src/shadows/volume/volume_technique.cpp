@@ -11,8 +11,6 @@
 // volume both counts are equal, since each closed volume's polygons sum to zero along a ray.
 #include "shadows/volume/volume_technique.h"
 
-#include "core/timer.h"
-#include "shadows/facing_away.h"
 #include "shadows/volume/shadow_stencil.h"
 
 namespace penumbra {
@@ -25,20 +23,11 @@ class ShadowVolumes final : public PreparedTechnique {
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override {
-    TechniqueResult result;
-    Stats& stats = result.stats;
     ShadowStencilOptions stencil_options;
     stencil_options.mode = options_.mode;
     stencil_options.two_level_stencil = options_.two_level_stencil;
     stencil_options.simd = context.simd;
-    const Image<int32_t> stencil =
-        shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
-    {
-      PassTimer timer(stats, "resolve");
-      resolveVisibility(scene_, light, view, eye, result.visibility,
-                        [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
-    }
-    return result;
+    return hardShadowVolumes(scene_, light, view, eye, stencil_options);
   }
 
  private:
