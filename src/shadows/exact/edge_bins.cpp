@@ -45,7 +45,12 @@ class RegionBuilder {
 
   Region region(const PotentialEdge& e, const EdgeTriangle* triangles) const {
     Region region;
-    if (e.triangle_count <= uint32_t(kMaxTileTriangles)) {
+    // The silhouette test needs every triangle's inclusion from the sides alone: not with a
+    // triangle cutting the light (its inclusion depends on distances, pixel_edges.cpp).
+    bool signs_decide = e.triangle_count <= uint32_t(kMaxTileTriangles);
+    for (uint32_t k = 0; k < e.triangle_count && signs_decide; ++k)
+      signs_decide = !triangles[e.first_triangle + k].cuts;
+    if (signs_decide) {
       for (uint32_t k = 0; k < e.triangle_count; ++k) {
         const EdgeTriangle& t = triangles[e.first_triangle + k];
         region.triangles[k] = screenPlane(t.normal, t.offset);

@@ -266,8 +266,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             ++work.inside;
           }
         }
-        // Triangles cutting the light: every pixel of the tile takes them, less the centre
-        // segment's crossings, which the stencil counted.
+        // Triangles cutting the light and not wholly in front of it: counted sample by sample,
+        // less the centre segment's crossing, which the stencil counted.
         const uint32_t* cut_begin = bins.cutting.data() + bins.cutting_begin[index];
         const uint32_t* cut_end = bins.cutting.data() + bins.cutting_begin[index + 1];
         for (uint64_t active = block.active; active != 0; active &= active - 1) {
@@ -282,6 +282,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
               setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
                          origins, light, f, known);
             }
+            // Wholly in front of the light: the edge sums count it (pixel_edges.cpp).
+            if (inFrontOfLight(f.p, f.light_near, t.v[0], t.v[1], t.v[2])) continue;
             if (segmentHitsTriangle(f.p, dvec3(light.center) - f.p, 1.0 - kTfarShrink, t))
               --f.centre_count;
             scratch.cutting[i].push_back(&t);

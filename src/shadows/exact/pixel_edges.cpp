@@ -45,6 +45,7 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   const double omc = f.cone.one_minus_cos_max;
   f.light_radius = std::sqrt(omc * (2.0 - omc)) / (1.0 - omc) * (1.0 + 1e-5);
   f.z_min = 1e-7 * glm::length(c - f.p);
+  f.light_near = glm::length(c - f.p) - r;
   // The stencil counted the visible triangle exactly when the centre is behind it.
   f.centre_count = stencil - (f.start.intoSurface(c) ? 1 : 0);
   f.reach = 0;
@@ -61,15 +62,18 @@ bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const Pi
   if (za <= f.z_min && zb <= f.z_min) return false;  // behind the point: no ray toward the light
   // Silhouette from p: the signed number of the edge's triangles on each side of the plane
   // through p and the edge, from each triangle's own plane (EdgeTriangle). Left out: the
-  // visible triangle, and triangles whose plane has p and the light centre on one side (no
-  // segment from p to the light crosses them while the plane misses the light; the stencil
-  // does not count them at the centre either).
+  // visible triangle; triangles whose plane misses the light and has p and the light centre on
+  // one side (no segment from p to the light crosses them; the stencil does not count them at
+  // the centre either); and triangles whose plane cuts the light unless they lie wholly in
+  // front of it (the others are counted sample by sample).
   int32_t weight = 0;
   for (uint32_t k = 0; k < e.triangle_count; ++k) {
     const EdgeTriangle& t = triangles[e.first_triangle + k];
     if (t.id == f.primitive) continue;
     const double at_p = glm::dot(t.normal, p) + t.offset;
-    if ((at_p > 0.0) == t.light_above) continue;
+    if (t.cuts ? !inFrontOfLight(p, f.light_near, e.a, e.b, t.opposite)
+               : (at_p > 0.0) == t.light_above)
+      continue;
     weight -= t.winding * ((at_p > 0.0) - (at_p < 0.0));
   }
   if (weight == 0) return false;

@@ -31,6 +31,7 @@ struct PixelFrame {
   dvec3 axis{0.0}, tangent{0.0}, bitangent{0.0};
   double light_radius = 0;  // of the light's disk on the plane at unit distance
   double z_min = 0;         // edges are clipped to this depth along the axis
+  double light_near = 0;    // |c - p| - r: nearer than this, a triangle is in front of the light
   int32_t centre_count = 0;  // D at the centre, the visible triangle left out
   int64_t reach = 0;        // how far the edges can move any sample's count from the centre's
 };

@@ -75,22 +75,18 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
           }
           const dvec3 normal(plane);
           const double at_centre = glm::dot(normal, c) + plane.w;
-          if (cuts[t]) {
-            ++cutting;
-            continue;
-          }
           // Side of the triangle seen from the centre (EdgeTriangle).
           const int8_t winding =
               glm::dot(normal, glm::cross(b - a, opposite - a)) >= 0.0 ? int8_t(1) : int8_t(-1);
+          cutting += cuts[t];
           centre_sides -= winding * sign(at_centre);
-          part.triangles.push_back(
-              EdgeTriangle{first_id + t, at_centre > 0.0, winding, normal, plane.w});
+          part.triangles.push_back(EdgeTriangle{first_id + t, at_centre > 0.0, cuts[t] != 0,
+                                                winding, opposite, normal, plane.w});
         }
         const size_t count = part.triangles.size() - first;
-        if (count == 0) continue;  // only cutting triangles, or none with an area
+        if (count == 0) continue;  // no triangle with an area
         // Two triangles on opposite sides seen from the centre, and neither plane near the
-        // light: never a silhouette from any point of it. (With one of them cutting the light,
-        // the other is alone in the sum: an open edge.)
+        // light: never a silhouette from any point of it.
         const bool potential = count != 2 || cutting > 0 || centre_sides != 0;
         if (!potential) {
           part.triangles.resize(first);

@@ -13,6 +13,7 @@
 //
 // Numeric conventions: world space in double (the meshes are float, widened once). Plane values
 // are signed distances (unit normals).
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -29,16 +30,29 @@ namespace penumbra {
 // since that triple product is minus the volume of (a, b, opposite, p). So the silhouette test
 // at a point is one plane evaluation per triangle, the same value that says whether the
 // triangle lies between the point and the light (docs/exact-soft-shadows.md).
-// Triangles whose plane cuts the light ball are not among an edge's triangles: the edge sum is
-// exact only for planes that miss the light (docs/exact-soft-shadows.md), so those are
-// CuttingTriangles, counted sample by sample.
+//
+// A triangle whose plane cuts the light ball (`cuts`) may be crossed before the light by some
+// segments toward it and after it by others: the edge sums take it only where it lies wholly
+// nearer the point than the light does (inFrontOfLight); elsewhere it is a CuttingTriangle,
+// counted sample by sample.
 struct EdgeTriangle {
   uint32_t id;        // global triangle id (EyeBuffers::primitive)
   bool light_above;   // the light centre lies strictly on the positive side of its plane
+  bool cuts;          // its plane cuts the light ball
   int8_t winding;     // +1: the triangle's normal is that of (a, b, opposite); -1: reversed
+  dvec3 opposite;     // its vertex off the edge
   dvec3 normal;       // its plane: dot(normal, x) + offset, unit normal
   double offset;
 };
+
+// True when every point of the triangle (a, b, v) is nearer p than any point of the light ball
+// (light_near = |c - p| - r): every segment from p toward the light crosses it, if at all,
+// before the light. The edge sums and the sample-by-sample count use this same test.
+inline bool inFrontOfLight(const dvec3& p, double light_near, const dvec3& a, const dvec3& b,
+                           const dvec3& v) {
+  const double far = std::max({glm::length(a - p), glm::length(b - p), glm::length(v - p)});
+  return far < light_near;
+}
 
 struct PotentialEdge {
   dvec3 a, b;
@@ -46,15 +60,16 @@ struct PotentialEdge {
 };
 
 // A triangle whose plane cuts the light ball (a wall through the light, a floor the light sinks
-// into): it can block rays toward the part of the light beyond its plane whichever side of it
-// the centre is on, so it is tested against each sample's segment instead.
+// into, the rim of a curved occluder seen edge-on from the light): it can block rays toward the
+// part of the light beyond its plane whichever side of it the centre is on. Where it is not
+// wholly in front of the light (inFrontOfLight) it is tested against each sample's segment.
 struct CuttingTriangle {
   uint32_t id;
   dvec3 v[3];
 };
 
 struct PotentialEdges {
-  std::vector<PotentialEdge> edges;  // edges with at least one triangle not cutting the light
+  std::vector<PotentialEdge> edges;
   std::vector<EdgeTriangle> triangles;
   std::vector<CuttingTriangle> cutting;
   size_t scene_edges = 0;  // edges of the scene's meshes, for the ratio
