@@ -89,10 +89,10 @@ class RegionBuilder {
   // reaches, bounded by the pyramid around a ball holding the triangle.
   Region region(const CuttingTriangle& t) const {
     Region region;
-    const dvec3 m = (t.v[0] + t.v[1] + t.v[2]) / 3.0;
-    const double rho = std::max({glm::length(t.v[0] - m), glm::length(t.v[1] - m),
-                                 glm::length(t.v[2] - m)});
-    pyramid(region, m, rho);
+    for (int k = 0; k < t.region_count; ++k) {
+      region.planes[size_t(region.plane_count++)] =
+          screenPlane(dvec3(t.region[size_t(k)]), t.region[size_t(k)].w);
+    }
     screenBox(region, t.v, 3);
     return region;
   }
@@ -128,21 +128,13 @@ class RegionBuilder {
   }
 
  private:
-  // The region of anything inside a ball of radius rho around m: every segment from the light
-  // through it passes through the ball, so the region lies in the cone of the two balls'
-  // internal tangents, apex where they cross, O = c + (m - c) r / (r + rho), half-angle
-  // asin((r + rho) / |m - c|); four planes through O circumscribe it. None when the ball
-  // comes near the light.
+  // The region of anything inside a ball of radius rho around m (circumscribedPyramid).
   void pyramid(Region& region, const dvec3& m, double rho) const {
-    const double distance = glm::length(m - c_);
-    const double sin_gamma = (r_ + rho) / distance * (1.0 + 1e-9);
-    if (!(sin_gamma < 0.9)) return;
-    const dvec3 d = (m - c_) / distance;
-    const dvec3 apex = c_ + (m - c_) * (r_ / (r_ + rho));
-    const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
-    const dvec3 helper = std::fabs(d.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
-    const dvec3 t1 = glm::normalize(glm::cross(d, helper)), t2 = glm::cross(d, t1);
-    for (const dvec3& t : {t1, -t1, t2, -t2}) add(region, sin_gamma * d - cos_gamma * t, apex);
+    dvec4 planes[4];
+    const int count = circumscribedPyramid(c_, r_, m, rho, planes);
+    for (int k = 0; k < count; ++k) {
+      region.planes[size_t(region.plane_count++)] = screenPlane(dvec3(planes[k]), planes[k].w);
+    }
   }
 
   // Largest value over the box, at the corner the gradient points to. (Its rounding in double

@@ -56,6 +56,7 @@ struct Scratch {
   std::vector<FloatBlock> x, y;
   std::vector<IntBlock> count;
   std::vector<uint8_t> into;
+  std::vector<ConeSample> cone_samples;  // a pixel's samples, for the triangles cutting the light
   PixelBlock block;
   PixelFrame frames[kBlockPixels];
   int px[kBlockPixels], py[kBlockPixels];
@@ -63,7 +64,7 @@ struct Scratch {
   std::vector<const CuttingTriangle*> cutting[kBlockPixels];
   explicit Scratch(const SampleSet& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
-        into(size_t(s.n)) {}
+        into(size_t(s.n)), cone_samples(size_t(s.n)) {}
 };
 
 struct TileWork {
@@ -135,17 +136,20 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
         addEdgeCrossings(e.edge, sx + b, sy + b, count + b, e.runs.end[k] - b, simd);
     }
   }
-  // Triangles cutting the light, against each sample's segment as the oracle traces it.
+  // Triangles cutting the light, against each sample's segment as the oracle traces it: the
+  // samples of the blocks the triangle's angular extent can reach and not blocked already.
   if (!cutting.empty()) {
-    for (int i = 0; i < n; ++i) {
-      if (count[i] != 0) continue;  // blocked already
-      const ConeSample s = sampleSphereCone(f.cone, samples_.disk[size_t(i)]);
-      const double t_max = double(s.distance) * (1.0 - kTfarShrink);
-      for (const CuttingTriangle* t : cutting) {
-        if (segmentHitsTriangle(f.p, dvec3(s.direction), t_max, *t)) {
-          ++count[i];
-          break;
-        }
+    for (int i = 0; i < n; ++i)
+      scratch.cone_samples[size_t(i)] = sampleSphereCone(f.cone, samples_.disk[size_t(i)]);
+  }
+  for (const CuttingTriangle* t : cutting) {
+    const SampleRuns runs = triangleRuns(*t, f, samples_);
+    for (int k = 0; k < 2; ++k) {
+      for (uint32_t i = runs.begin[k]; i < std::min(runs.end[k], uint32_t(n)); ++i) {
+        if (count[i] != 0) continue;
+        const ConeSample& s = scratch.cone_samples[i];
+        const double t_max = double(s.distance) * (1.0 - kTfarShrink);
+        if (segmentHitsTriangle(f.p, dvec3(s.direction), t_max, *t)) count[i] = 1;
       }
     }
   }
@@ -282,8 +286,9 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
               setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
                          origins, light, f, known);
             }
-            // Wholly in front of the light: the edge sums count it (pixel_edges.cpp).
-            if (inFrontOfLight(f.p, f.light_near, t.v[0], t.v[1], t.v[2])) continue;
+            // Outside the cone, or in front of the light, where the edge sums count it.
+            if (classifyCutting(t.v[0], t.v[1], t.v[2], f) != CuttingPlace::Across) continue;
+            if (!mayBlockSamples(t, f, light)) continue;
             if (segmentHitsTriangle(f.p, dvec3(light.center) - f.p, 1.0 - kTfarShrink, t))
               --f.centre_count;
             scratch.cutting[i].push_back(&t);

@@ -7,6 +7,84 @@
 
 namespace penumbra {
 
+CuttingPlace classifyCutting(const dvec3& a, const dvec3& b, const dvec3& c, const PixelFrame& f) {
+  // The whole triangle in front (the clipped part then is too): the common case, no clipping.
+  const double limit = f.light_near * (1.0 - 1e-9);
+  if (std::max({glm::dot(a - f.p, f.axis), glm::dot(b - f.p, f.axis),
+                glm::dot(c - f.p, f.axis)}) < limit)
+    return CuttingPlace::InFront;
+  // Sutherland-Hodgman against the four planes through p tangent to the cone, a little wide.
+  const double sin_w = std::min(1.0, f.sin_max * (1.0 + 1e-6) + 1e-12);
+  const double cos_w = std::sqrt(1.0 - sin_w * sin_w);
+  dvec3 polygon[8] = {a - f.p, b - f.p, c - f.p};
+  dvec3 clipped[8];
+  int count = 3;
+  const dvec3 sides[4] = {f.tangent, -f.tangent, f.bitangent, -f.bitangent};
+  for (const dvec3& side : sides) {
+    const dvec3 n = sin_w * f.axis - cos_w * side;  // inside: n . x >= 0
+    int out = 0;
+    for (int i = 0; i < count; ++i) {
+      const dvec3& u = polygon[i];
+      const dvec3& v = polygon[(i + 1) % count];
+      const double du = glm::dot(n, u), dv = glm::dot(n, v);
+      if (du >= 0.0) clipped[out++] = u;
+      if ((du >= 0.0) != (dv >= 0.0)) clipped[out++] = u + (v - u) * (du / (du - dv));
+    }
+    count = out;
+    if (count == 0) return CuttingPlace::Outside;
+    std::copy(clipped, clipped + count, polygon);
+  }
+  double deepest = -1e300;
+  for (int i = 0; i < count; ++i) deepest = std::max(deepest, glm::dot(polygon[i], f.axis));
+  return deepest < limit ? CuttingPlace::InFront : CuttingPlace::Across;
+}
+
+bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light& light) {
+  // A relative margin far wider than the rounding of these double evaluations.
+  const double scale = glm::length(f.p - dvec3(light.center)) + light.radius;
+  const double margin = 1e-9 * scale;
+  for (int k = 0; k < t.region_count; ++k) {
+    const dvec4& plane = t.region[size_t(k)];
+    if (glm::dot(dvec3(plane), f.p) + plane.w < -margin) return false;
+  }
+  // Wholly deeper along the axis than the light centre: behind every point of the cap seen from
+  // p (whose depths are at most d - r^2 / d), so crossed only after the light.
+  const double light_centre_depth = f.light_near + light.radius;
+  if (std::min({glm::dot(t.v[0] - f.p, f.axis), glm::dot(t.v[1] - f.p, f.axis),
+                glm::dot(t.v[2] - f.p, f.axis)}) > light_centre_depth * (1.0 + 1e-9))
+    return false;
+  // The cap seen from p: sphere points q with (q - c) . u >= r^2 / d, u the unit vector from c
+  // toward p; it lies in the ball around m = c + u r^2 / d of radius r sqrt(1 - r^2 / d^2).
+  const dvec3 c(light.center);
+  const double r = light.radius, d = glm::length(f.p - c);
+  const dvec3 m = c + (f.p - c) * (r * r / (d * d));
+  const double rho = r * std::sqrt(std::max(0.0, 1.0 - r * r / (d * d)));
+  const dvec3 n(t.plane);
+  const double at_p = glm::dot(n, f.p) + t.plane.w, at_m = glm::dot(n, m) + t.plane.w;
+  const bool same_side = at_p > 0.0 ? at_m > rho + margin : at_m < -rho - margin;
+  return !same_side;
+}
+
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SampleSet& samples) {
+  SampleRuns all;
+  all.end[0] = uint32_t(samples.padded);
+  double angle[3];
+  for (int k = 0; k < 3; ++k) {
+    const dvec3 v = t.v[k] - f.p;
+    const double z = glm::dot(v, f.axis);
+    if (!(z > f.z_min)) return all;
+    angle[k] = pseudoAngle(glm::dot(v, f.tangent), glm::dot(v, f.bitangent));
+  }
+  std::sort(angle, angle + 3);
+  // The covering arc starts after the widest gap between consecutive angles; a gap under a half
+  // turn means the angles surround the centre.
+  const double gaps[3] = {angle[1] - angle[0], angle[2] - angle[1], angle[0] + 4.0 - angle[2]};
+  const int widest = int(std::max_element(gaps, gaps + 3) - gaps);
+  if (gaps[widest] <= 2.0) return all;
+  const double from = angle[(widest + 1) % 3];
+  return sampleRuns(samples, from, from + (4.0 - gaps[widest]));
+}
+
 // Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
 bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t) {
   const dvec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];
@@ -46,6 +124,8 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   f.light_radius = std::sqrt(omc * (2.0 - omc)) / (1.0 - omc) * (1.0 + 1e-5);
   f.z_min = 1e-7 * glm::length(c - f.p);
   f.light_near = glm::length(c - f.p) - r;
+  f.cos_max = 1.0 - omc;
+  f.sin_max = std::sqrt(omc * (2.0 - omc));
   // The stencil counted the visible triangle exactly when the centre is behind it.
   f.centre_count = stencil - (f.start.intoSurface(c) ? 1 : 0);
   f.reach = 0;
@@ -71,7 +151,7 @@ bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const Pi
     const EdgeTriangle& t = triangles[e.first_triangle + k];
     if (t.id == f.primitive) continue;
     const double at_p = glm::dot(t.normal, p) + t.offset;
-    if (t.cuts ? !inFrontOfLight(p, f.light_near, e.a, e.b, t.opposite)
+    if (t.cuts ? classifyCutting(e.a, e.b, t.opposite, f) != CuttingPlace::InFront
                : (at_p > 0.0) == t.light_above)
       continue;
     weight -= t.winding * ((at_p > 0.0) - (at_p < 0.0));

@@ -31,7 +31,8 @@ struct PixelFrame {
   dvec3 axis{0.0}, tangent{0.0}, bitangent{0.0};
   double light_radius = 0;  // of the light's disk on the plane at unit distance
   double z_min = 0;         // edges are clipped to this depth along the axis
-  double light_near = 0;    // |c - p| - r: nearer than this, a triangle is in front of the light
+  double light_near = 0;    // |c - p| - r: the light's nearest depth along the axis
+  double sin_max = 0, cos_max = 1;  // of the cone's half-angle
   int32_t centre_count = 0;  // D at the centre, the visible triangle left out
   int64_t reach = 0;        // how far the edges can move any sample's count from the centre's
 };
@@ -45,6 +46,26 @@ struct PixelEdge {
 // The oracle shortens its shadow rays by this much so the light point itself never blocks
 // (reference_technique.cpp).
 inline constexpr double kTfarShrink = 1e-6;
+
+// Where a triangle whose plane cuts the light stands, seen from a pixel's point: the part of it
+// inside the point's cone toward the light (clipped to a square pyramid around the cone) is
+// empty (Outside: no segment toward the light crosses it), lies wholly nearer along the axis
+// than the light's nearest depth (InFront: every segment that crosses it does so before the
+// light; depth along the axis grows along each), or neither (Across: some segments may cross
+// it beyond the light). The edge sums take InFront triangles as any other and leave the rest;
+// Across ones are counted sample by sample. Both use this one test.
+enum class CuttingPlace { Outside, InFront, Across };
+CuttingPlace classifyCutting(const dvec3& a, const dvec3& b, const dvec3& c, const PixelFrame& f);
+
+// False when the triangle cannot block any sample of the point: the point lies outside the
+// triangle's region, the triangle lies wholly behind the light centre, or the whole cap of the
+// light the point sees lies on the point's side of the triangle's plane (a segment from the
+// point to the cap then never crosses the plane).
+bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light& light);
+
+// The blocks of samples whose angle around the light centre the triangle's projection from the
+// point can reach (all of them when it surrounds the centre or reaches behind the point).
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SampleSet& samples);
 
 // Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
 bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t);

@@ -18,6 +18,23 @@ int sign(double v) { return (v > 0.0) - (v < 0.0); }
 
 }  // namespace
 
+int circumscribedPyramid(const dvec3& c, double r, const dvec3& m, double rho, dvec4 planes[4]) {
+  const double distance = glm::length(m - c);
+  const double sin_gamma = (r + rho) / distance * (1.0 + 1e-9);
+  if (!(sin_gamma < 0.9)) return 0;
+  const dvec3 d = (m - c) / distance;
+  const dvec3 apex = c + (m - c) * (r / (r + rho));
+  const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
+  const dvec3 helper = std::fabs(d.x) < 0.6 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+  const dvec3 t1 = glm::normalize(glm::cross(d, helper)), t2 = glm::cross(d, t1);
+  const dvec3 sides[4] = {t1, -t1, t2, -t2};
+  for (int k = 0; k < 4; ++k) {
+    const dvec3 n = sin_gamma * d - cos_gamma * sides[k];
+    planes[k] = dvec4(n, -glm::dot(n, apex));
+  }
+  return 4;
+}
+
 PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
   const dvec3 c(light.center);
   const double r = light.radius;
@@ -48,9 +65,15 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
       const double scale = glm::length(dvec3(mesh.vertex(t, 0)) - c) + r;
       if (std::fabs(glm::dot(dvec3(plane), c) + plane.w) <= r * (1.0 + kSlack) + kSlack * scale) {
         cuts[t] = 1;
-        out.cutting.push_back(CuttingTriangle{
-            first_id + uint32_t(t),
-            {dvec3(mesh.vertex(t, 0)), dvec3(mesh.vertex(t, 1)), dvec3(mesh.vertex(t, 2))}});
+        CuttingTriangle cut;
+        cut.id = first_id + uint32_t(t);
+        for (int k = 0; k < 3; ++k) cut.v[k] = dvec3(mesh.vertex(t, k));
+        cut.plane = plane;
+        const dvec3 centroid = (cut.v[0] + cut.v[1] + cut.v[2]) / 3.0;
+        const double rho = std::max({glm::length(cut.v[0] - centroid), glm::length(cut.v[1] - centroid),
+                                     glm::length(cut.v[2] - centroid)});
+        cut.region_count = circumscribedPyramid(c, r, centroid, rho, cut.region.data());
+        out.cutting.push_back(cut);
       }
     }
     const size_t edge_count = adjacency.edges.size();

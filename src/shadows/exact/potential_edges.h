@@ -14,6 +14,7 @@
 // Numeric conventions: world space in double (the meshes are float, widened once). Plane values
 // are signed distances (unit normals).
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -32,9 +33,9 @@ namespace penumbra {
 // triangle lies between the point and the light (docs/exact-soft-shadows.md).
 //
 // A triangle whose plane cuts the light ball (`cuts`) may be crossed before the light by some
-// segments toward it and after it by others: the edge sums take it only where it lies wholly
-// nearer the point than the light does (inFrontOfLight); elsewhere it is a CuttingTriangle,
-// counted sample by sample.
+// segments toward it and after it by others: the edge sums take it only where its part inside
+// the point's cone toward the light lies wholly in front of the light (pixel_edges.h,
+// classifyCutting); elsewhere it is a CuttingTriangle, counted sample by sample.
 struct EdgeTriangle {
   uint32_t id;        // global triangle id (EyeBuffers::primitive)
   bool light_above;   // the light centre lies strictly on the positive side of its plane
@@ -45,15 +46,6 @@ struct EdgeTriangle {
   double offset;
 };
 
-// True when every point of the triangle (a, b, v) is nearer p than any point of the light ball
-// (light_near = |c - p| - r): every segment from p toward the light crosses it, if at all,
-// before the light. The edge sums and the sample-by-sample count use this same test.
-inline bool inFrontOfLight(const dvec3& p, double light_near, const dvec3& a, const dvec3& b,
-                           const dvec3& v) {
-  const double far = std::max({glm::length(a - p), glm::length(b - p), glm::length(v - p)});
-  return far < light_near;
-}
-
 struct PotentialEdge {
   dvec3 a, b;
   uint32_t first_triangle, triangle_count;  // into PotentialEdges::triangles
@@ -62,11 +54,25 @@ struct PotentialEdge {
 // A triangle whose plane cuts the light ball (a wall through the light, a floor the light sinks
 // into, the rim of a curved occluder seen edge-on from the light): it can block rays toward the
 // part of the light beyond its plane whichever side of it the centre is on. Where it is not
-// wholly in front of the light (inFrontOfLight) it is tested against each sample's segment.
+// wholly in front of the light (pixel_edges.h, classifyCutting) it is tested against each
+// sample's segment.
 struct CuttingTriangle {
   uint32_t id;
   dvec3 v[3];
+  dvec4 plane;  // unit normal and offset
+  // The points some segment from the light through it reaches lie inside these planes
+  // (value >= 0; circumscribedPyramid); none when the triangle comes near the light.
+  std::array<dvec4, 4> region;
+  int region_count = 0;
 };
+
+// The region of anything inside the ball of radius rho around m, for a light ball (c, r): every
+// segment from the light through it passes through that ball, so the region lies in the cone of
+// the two balls' internal tangents, apex where they cross, O = c + (m - c) r / (r + rho),
+// half-angle asin((r + rho) / |m - c|). Writes the four planes through O that circumscribe it
+// (unit normal n and offset, inside where n . x + offset >= 0) and returns 4, or returns 0
+// when the ball comes near the light (the half-angle would pass asin 0.9).
+int circumscribedPyramid(const dvec3& c, double r, const dvec3& m, double rho, dvec4 planes[4]);
 
 struct PotentialEdges {
   std::vector<PotentialEdge> edges;
