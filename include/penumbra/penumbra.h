@@ -48,6 +48,7 @@
 #include <penumbra/scene/mesh.h>
 #include <penumbra/scene/scene.h>
 #include <penumbra/scene/scene_file.h>
+#include <penumbra/shadows/exact_options.h>
 #include <penumbra/shadows/reference_options.h>
 #include <penumbra/shadows/shadow_map_options.h>
 #include <penumbra/shadows/technique.h>

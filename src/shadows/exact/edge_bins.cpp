@@ -285,6 +285,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   const double margin = margin_footprints * pixel_angle;
   const RegionBuilder builder(light, view, level);
   bins.tests.resize(edges.edges.size());
+  bins.cutting_tests.resize(edges.cutting.size());
   // Float evaluation error of E at any pixel centre of the image with z in [0, 1]: four
   // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp).
   const double x_max = view.width + 0.5, y_max = view.height + 0.5;
@@ -380,7 +381,15 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
       },
       bins.begin, bins.edges);
   binAll(
-      edges.cutting.size(), [&](size_t i) { return builder.region(edges.cutting[i]); },
+      edges.cutting.size(),
+      [&](size_t i) {
+        const Region region = builder.region(edges.cutting[i]);
+        EdgeScreenTest& test = bins.cutting_tests[i];
+        test.region_count = region.plane_count;
+        for (int k = 0; k < region.plane_count; ++k)
+          toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
+        return region;
+      },
       bins.cutting_begin, bins.cutting);
   return bins;
 }

@@ -26,8 +26,10 @@ struct EdgeBins {
   std::vector<uint32_t> edges;  // edge indices, ascending within a tile
   // Per potential edge, its planes for the per-pixel quick reject (edge_screen_test.h).
   std::vector<EdgeScreenTest> tests;
-  // The same for the triangles cutting the light (PotentialEdges::cutting): per tile, indices.
+  // The same for the triangles cutting the light (PotentialEdges::cutting): per tile, indices,
+  // and per triangle its region's planes for the quick reject (no silhouette test).
   std::vector<uint32_t> cutting_begin, cutting;
+  std::vector<EdgeScreenTest> cutting_tests;
   uint64_t tiles_tested = 0, tiles_culled = 0;
 };
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,

@@ -274,12 +274,15 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         // less the centre segment's crossing, which the stencil counted.
         const uint32_t* cut_begin = bins.cutting.data() + bins.cutting_begin[index];
         const uint32_t* cut_end = bins.cutting.data() + bins.cutting_begin[index + 1];
-        for (uint64_t active = block.active; active != 0; active &= active - 1) {
-          const int i = __builtin_ctzll(active);
-          scratch.cutting[i].clear();
-          PixelFrame& f = scratch.frames[i];
-          for (const uint32_t* it = cut_begin; it != cut_end; ++it) {
-            const CuttingTriangle& t = edges.cutting[*it];
+        for (uint64_t active = block.active; active != 0; active &= active - 1)
+          scratch.cutting[__builtin_ctzll(active)].clear();
+        for (const uint32_t* it = cut_begin; it != cut_end; ++it) {
+          const CuttingTriangle& t = edges.cutting[*it];
+          uint64_t candidates = edgeCandidates(bins.cutting_tests[*it], block, context.simd);
+          while (candidates != 0) {
+            const int i = __builtin_ctzll(candidates);
+            candidates &= candidates - 1;
+            PixelFrame& f = scratch.frames[i];
             if (t.id == f.primitive) continue;
             if (!f.ready) {
               float known = 0.0f;  // never set: a clear pixel is outside the light
@@ -293,8 +296,12 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
               --f.centre_count;
             scratch.cutting[i].push_back(&t);
           }
-          soft.at(scratch.px[i], scratch.py[i]) = finishPixel(
-              f, scratch.edges[i], scratch.cutting[i], light, context.simd, scratch);
+        }
+        for (uint64_t active = block.active; active != 0; active &= active - 1) {
+          const int i = __builtin_ctzll(active);
+          soft.at(scratch.px[i], scratch.py[i]) =
+              finishPixel(scratch.frames[i], scratch.edges[i], scratch.cutting[i], light,
+                          context.simd, scratch);
         }
       }
       progress.add();
