@@ -175,10 +175,10 @@ class RegionBuilder {
   // The screen box of the region's part in front of the eye: the region lies in the convex
   // hull of the edge's (or triangle's) corners and the shadow cones of the corners (a point
   // x + t (x - q) of the shadow is the same blend of the corners' shadow points), each cone
-  // inside a square pyramid of four directions. Vertices of the hull cut at w = near are the end points in front of it and
-  // the crossings of its edges with it; directions away from the eye add their vanishing
-  // points. A cone with directions both toward and away from the eye reaches the screen's
-  // border, so the box is the whole screen then.
+  // inside a square pyramid of four directions. Vertices of the hull cut at w = near are the
+  // corners in front of it and the crossings of its edges with it; directions away from the
+  // eye add their vanishing points. A cone with directions both toward and away from the eye
+  // reaches the screen's border, so the box is the whole screen then.
   void screenBox(Region& region, const dvec3* ends, int end_count) const {
     std::array<dvec4, 3> points;
     std::array<dvec4, 12> directions;

@@ -70,8 +70,9 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
         for (int k = 0; k < 3; ++k) cut.v[k] = dvec3(mesh.vertex(t, k));
         cut.plane = plane;
         const dvec3 centroid = (cut.v[0] + cut.v[1] + cut.v[2]) / 3.0;
-        const double rho = std::max({glm::length(cut.v[0] - centroid), glm::length(cut.v[1] - centroid),
-                                     glm::length(cut.v[2] - centroid)});
+        const double rho =
+            std::max({glm::length(cut.v[0] - centroid), glm::length(cut.v[1] - centroid),
+                      glm::length(cut.v[2] - centroid)});
         cut.region_count = circumscribedPyramid(c, r, centroid, rho, cut.region.data());
         out.cutting.push_back(cut);
       }
