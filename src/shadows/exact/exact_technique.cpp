@@ -331,9 +331,10 @@ TechniqueInfo exactTechnique() {
   info.traits.soft = true;
   info.traits.exact = true;
   // Against the 1024-ray oracle: the sampling error of 256 fixed samples, like the oracle's own
-  // at 256 rays.
-  info.traits.covered_mae_bound = 0.01;
-  info.traits.penumbra_mae_bound = 0.03;
+  // at 256 rays. Measured on the built-in scenes at the conformance size: covered 0.0002-0.0014,
+  // penumbra 0.0051-0.0059; twice that is claimed.
+  info.traits.covered_mae_bound = 0.003;
+  info.traits.penumbra_mae_bound = 0.012;
   info.options =
       OptionTableBuilder<ExactOptions>()
           .integer("samples", "light samples per pixel (one fixed stratified set)",
