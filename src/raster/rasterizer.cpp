@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/parallel.h"
@@ -141,6 +142,11 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
     StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};
     target.x0 = box.x0;
     target.y0 = box.y0;
+    std::optional<TileCopy<uint32_t>> tile_primitive;
+    if (options.primitive) {
+      tile_primitive.emplace(*options.primitive, box);
+      target.primitive = tile_primitive->data();
+    }
     // Two-level stencil: a polygon that covers a whole culling tile and passes the depth rule
     // at all of its pixels adds its contribution to the tile's coarse cell instead.
     TileOffsets coarse(options.cull_level);
@@ -153,6 +159,9 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
       const bool zfail = (t.flags & kZFail) != 0;
       const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
       const DepthRule rule = zfail ? DepthRule::NotCloser : DepthRule::Closer;
+      const StencilOwners owners = options.primitive
+                                       ? StencilOwners{t.owners[0], t.owners[1]}
+                                       : StencilOwners{};
       forEachCullRect(
           t, e, depth, options.cull_level,
           [&](const TileEdges& sub, float zmin, float zmax) {
@@ -168,7 +177,8 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
             if (code & kWhole)
               coarse.add(rect, contribution);
             else
-              stencilKernel(rect, contribution, rule, target, c.kernel, options.simd);
+              stencilKernel(rect, contribution, rule, target, c.kernel, options.simd,
+                            owners);
           },
           c.tally, kWhole);
     }

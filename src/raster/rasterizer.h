@@ -32,6 +32,9 @@ struct StencilOptions {
   // to each pixel (two-level stencil, Aila 2005, section 4.3; raster/tile_offsets.h). The
   // stencil ends the same; z_reads and stencil_writes fall, tiles_accepted counts such tiles.
   bool two_level = true;
+  // The eye pass's primitive ids, needed when polygons have owners (ClipTriangles::owners):
+  // they are not counted at their owners' pixels. Null: owners are ignored.
+  const Image<uint32_t>* primitive = nullptr;
 };
 
 // Adds every triangle's contribution to the stencil where its depth rule holds. The payload is

@@ -158,6 +158,14 @@ struct StencilTarget {
   int32_t* stencil;
   int stride;
   int x0 = 0, y0 = 0;  // as DepthTarget
+  // The eye pass's primitive ids, laid out as `depth`; only read for polygons with owners.
+  const uint32_t* primitive = nullptr;
+};
+
+// The visible triangles at whose pixels a polygon is not counted (ClipTriangles::owners).
+struct StencilOwners {
+  uint32_t first = 0xffffffffu, second = 0xffffffffu;
+  bool any() const { return (first & second) != 0xffffffffu; }
 };
 
 enum class DepthRule : uint8_t {
@@ -176,15 +184,18 @@ void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& targ
                  KernelCounts& counts, bool simd);
 
 // Shadow volumes: for covered pixels with a surface (stored depth > 0), adds `contribution` to
-// the stencil where the depth rule holds. Every covered pixel reads the depth once.
+// the stencil where the depth rule holds and the pixel's primitive is not one of `owners`.
+// Every covered pixel reads the depth once (and its primitive, when there are owners).
 void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
-                   const StencilTarget& target, KernelCounts& counts, bool simd);
+                   const StencilTarget& target, KernelCounts& counts, bool simd,
+                   StencilOwners owners = {});
 
 // The scalar twins, also used by the scalar-only build.
 void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
                        KernelCounts& counts);
 void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rule,
-                         const StencilTarget& target, KernelCounts& counts);
+                         const StencilTarget& target, KernelCounts& counts,
+                         StencilOwners owners = {});
 
 // True when the SIMD kernels are compiled in (not a PENUMBRA_SCALAR_ONLY build).
 bool simdKernelsAvailable();

@@ -64,7 +64,9 @@ void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget
 }
 
 void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rule,
-                         const StencilTarget& target, KernelCounts& counts) {
+                         const StencilTarget& target, KernelCounts& counts,
+                         StencilOwners owners) {
+  const bool owned = owners.any();
   // Covered: inside all three edges (>= 0).
   forEachCoveredPixel(e, [&](int x, int y) {
     ++counts.covered;
@@ -73,7 +75,9 @@ void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rul
     const float stored = target.depth[i];
     const float d = triangleDepthAt(e, x, y);
     const bool pass = rule == DepthRule::Closer ? d > stored : d <= stored;
-    if (stored > 0.0f && pass) {
+    const bool own =
+        owned && (target.primitive[i] == owners.first || target.primitive[i] == owners.second);
+    if (stored > 0.0f && pass && !own) {
       // Add the contribution to the stencil where both hold.
       target.stencil[i] += contribution;
       ++counts.writes;

@@ -70,9 +70,13 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
 }
 
 void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
-                       const StencilTarget& target, KernelCounts& counts) {
+                       const StencilTarget& target, KernelCounts& counts,
+                       StencilOwners owners) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
+  const hn::RebindToUnsigned<decltype(df)> du;
+  const bool owned = owners.any();
+  const auto owner0 = hn::Set(du, owners.first), owner1 = hn::Set(du, owners.second);
   const int lanes = int(hn::Lanes(df));
   const auto iota_i = hn::Iota(di, 0);
   const hn::Vec<decltype(di)> lane_step[3] = {hn::Mul(hn::Set(di, e.dx[0]), iota_i),
@@ -117,8 +121,16 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
       const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
       const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
       const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
-      const auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
+      auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
       if (hn::AllFalse(df, write)) continue;
+      if (owned) {
+        const auto write_u = hn::RebindMask(du, write);
+        const auto id = hn::MaskedLoad(write_u, du, target.primitive + size_t(y - target.y0) *
+                                                                   target.stride + (x - target.x0));
+        const auto own = hn::Or(hn::Eq(id, owner0), hn::Eq(id, owner1));
+        write = hn::RebindMask(df, hn::AndNot(own, write_u));
+        if (hn::AllFalse(df, write)) continue;
+      }
       writes += hn::CountTrue(df, write);
       // Add the contribution to the stencil where both hold.
       const auto write_i = hn::RebindMask(di, write);
@@ -150,11 +162,12 @@ void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& targ
 }
 
 void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
-                   const StencilTarget& target, KernelCounts& counts, bool simd) {
+                   const StencilTarget& target, KernelCounts& counts, bool simd,
+                   StencilOwners owners) {
   if (simd) {
-    HWY_DYNAMIC_DISPATCH(StencilKernelSimd)(e, contribution, rule, target, counts);
+    HWY_DYNAMIC_DISPATCH(StencilKernelSimd)(e, contribution, rule, target, counts, owners);
   } else {
-    stencilKernelScalar(e, contribution, rule, target, counts);
+    stencilKernelScalar(e, contribution, rule, target, counts, owners);
   }
 }
 
@@ -179,8 +192,9 @@ void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& targ
 }
 
 void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
-                   const StencilTarget& target, KernelCounts& counts, bool) {
-  stencilKernelScalar(e, contribution, rule, target, counts);
+                   const StencilTarget& target, KernelCounts& counts, bool,
+                   StencilOwners owners) {
+  stencilKernelScalar(e, contribution, rule, target, counts, owners);
 }
 
 bool simdKernelsAvailable() { return false; }

@@ -195,6 +195,14 @@ bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex
   return true;
 }
 
+SetupTriangle& withOwners(const ClipTriangles& tris, size_t t, SetupTriangle& s) {
+  if (!tris.owners.empty()) {
+    s.owners[0] = tris.owners[2 * t];
+    s.owners[1] = tris.owners[2 * t + 1];
+  }
+  return s;
+}
+
 // Triangles with a vertex outside some plane: clipped in double from the original clip-space
 // vertices, then fanned from the first remaining vertex.
 void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes, int width,
@@ -211,7 +219,7 @@ void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes,
   for (int k = 1; k + 1 < count; ++k) {
     SetupTriangle s;
     if (setupOne(screen[0], screen[k], screen[k + 1], width, height, tris.payload[t], flags, s))
-      out.push_back(s);
+      out.push_back(withOwners(tris, t, s));
   }
 }
 
@@ -230,7 +238,7 @@ void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, 
     if (any == 0) {
       SetupTriangle s;
       if (setupOne(c0.screen, c1.screen, c2.screen, width, height, tris.payload[t], flags, s))
-        out.push_back(s);
+        out.push_back(withOwners(tris, t, s));
       continue;
     }
     // NaN or infinite input covers nothing, and must not crash.
@@ -249,6 +257,7 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
   PENUMBRA_CHECK(width > 0 && height > 0 && width <= kMaxImageSize && height <= kMaxImageSize,
                  "image size {}x{} is outside 1..{}", width, height, kMaxImageSize);
   PENUMBRA_DCHECK(tris.indices.size() == tris.payload.size() * 3);
+  PENUMBRA_DCHECK(tris.owners.empty() || tris.owners.size() == tris.payload.size() * 2);
   const ClipPlanes planes = makePlanes(width, height);
   constexpr size_t kChunk = 4096;
 

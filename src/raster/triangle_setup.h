@@ -19,6 +19,9 @@ struct ClipTriangles {
   std::vector<uint32_t> indices;    // 3 per triangle
   std::vector<int32_t> payload;     // 1 per triangle
   std::vector<uint8_t> flags;       // 1 per triangle, kCullBackFace...; may be empty (= 0)
+  // Shadow volumes: 2 per triangle, the visible triangles (eye-pass primitive ids) at whose
+  // pixels the stencil never counts it (shadow_stencil.cpp); empty, or kNoOwner, for none.
+  std::vector<uint32_t> owners;
 
   ClipTriangles() = default;
   explicit ClipTriangles(const std::vector<vec4>& borrowed)
@@ -44,7 +47,19 @@ struct ClipTriangles {
     indices.insert(indices.end(), {i0, i1, i2});
     payload.push_back(value);
     flags.push_back(flag);
+    if (!owners.empty()) owners.insert(owners.end(), {kNoOwner, kNoOwner});
   }
+  // As add, with the two owners (either may be kNoOwner).
+  void addOwned(uint32_t i0, uint32_t i1, uint32_t i2, int32_t value, uint8_t flag,
+                uint32_t owner0, uint32_t owner1) {
+    if (owners.empty()) owners.assign(2 * payload.size(), kNoOwner);
+    indices.insert(indices.end(), {i0, i1, i2});
+    payload.push_back(value);
+    flags.push_back(flag);
+    owners.insert(owners.end(), {owner0, owner1});
+  }
+
+  static constexpr uint32_t kNoOwner = 0xffffffffu;  // = kNoPrimitive (depth_buffer.h)
 };
 
 inline constexpr uint8_t kCullBackFace = 1;  // drop the triangle when the eye sees its back
@@ -68,6 +83,7 @@ struct SetupTriangle {
   int32_t payload;               // the input triangle's payload
   int8_t facing;                 // +1 when the eye sees the front (counter-clockwise) side
   uint8_t flags;                 // the input triangle's flags
+  uint32_t owners[2] = {ClipTriangles::kNoOwner, ClipTriangles::kNoOwner};  // the input's
 };
 
 // Clips each input triangle to the near plane and the guard band, snaps to 28.4 and sets it up:

@@ -103,11 +103,12 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
       s.orientation[t] = (cast_only == 0 || facing == cast_only) ? facing : 0;
     }
   });
-  for (const Edge& e : adjacency.edges) {
+  for (size_t i = 0; i < adjacency.edges.size(); ++i) {
+    const Edge& e = adjacency.edges[i];
     int32_t m = 0;
     for (uint32_t u = e.first_use; u < e.first_use + e.use_count; ++u)
       m += adjacency.uses[u].sign * s.orientation[adjacency.uses[u].triangle];
-    if (m != 0) s.edges.push_back({e.v0, e.v1, m});
+    if (m != 0) s.edges.push_back({e.v0, e.v1, m, uint32_t(i)});
   }
   return s;
 }

@@ -29,6 +29,7 @@ struct SilhouetteEdge {
   // Net number of casting triangles traversing v0 -> v1 (negative: v1 -> v0). The volume side
   // quad (v1, v0, v0 at infinity, v1 at infinity) faces out of the shadow with this weight.
   int32_t multiplicity;
+  uint32_t edge;  // its index in the mesh's EdgeAdjacency::edges (which triangles use it)
 };
 
 struct Silhouette {

@@ -177,6 +177,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   Stats& stats = result.stats;
   // Two-sided casters: the stencil counts every triangle between the point and the centre.
   stencil_options.policy = CasterPolicy::TwoSided;
+  stencil_options.skip_own_quads = true;
   const Image<int32_t> stencil =
       shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
 

@@ -1,5 +1,7 @@
 #include "shadows/volume/shadow_stencil.h"
 
+#include <algorithm>
+
 #include "core/timer.h"
 #include "raster/rasterizer.h"
 #include "shadows/caster_volume.h"
@@ -8,18 +10,51 @@
 namespace penumbra {
 namespace {
 
+// True when the eye and `light` lie strictly on the same side of triangle t's plane (in double).
+bool eyeOnCentreSide(const Mesh& mesh, size_t t, const dvec3& eye, const dvec3& light) {
+  const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
+  const dvec3 n = glm::cross(b - a, c - a);
+  const double e = glm::dot(n, eye - a), l = glm::dot(n, light - a);
+  return (e > 0.0 && l > 0.0) || (e < 0.0 && l < 0.0);
+}
+
 // Side quads of every silhouette edge, extruded from the light centre to infinity, and with
 // z-fail the caps. Payloads are signed weights of polygons facing out of the volume
 // (rasterizer.h, rasterizeStencil).
-void appendVolumePolygons(const Mesh& mesh, const vec3& centre, const View& view,
+//
+// With skip_own_quads, a z-pass quad is not counted at the pixels of the triangles that use its
+// edge (its owners, the first two) and have the eye and the light centre strictly on the same
+// side of their plane: that plane holds the edge, so the quad, extruded away from the centre,
+// lies wholly on the other side, and the segment from the eye to a point on the triangle's
+// seen side cannot cross it. (A triangle seen from the side away from the centre is left out:
+// the quad may lie on the eye's side, and a soft light can still reach the point.) Counting it
+// anyway is a pure rounding decision: the quad leaves the visible surface along that very
+// edge, and on a triangle nearly edge-on to the light (a terminator's, on a finely tessellated
+// mesh) it runs within a hair of the whole triangle, so the float depth test flips pixel by
+// pixel: z-fighting that darkens or lights those pixels against the ray-traced answer. z-fail
+// quads count from behind the point, where they can lie: they keep the depth test.
+void appendVolumePolygons(const Mesh& mesh, const EdgeAdjacency& adjacency, uint32_t first_id,
+                          const vec3& centre, const View& view, bool skip_own_quads,
                           CasterVolume& volume, ClipTriangles& out) {
   appendExtrudedVertices(mesh, centre, view, volume, out);
+  const dvec3 eye(view.eye), light(centre);
   const uint32_t finite = volume.finite, infinite = volume.infinite;
   const uint8_t flags = volume.zfail ? kZFail : 0;
   for (const SilhouetteEdge& e : volume.silhouette.edges) {
+    uint32_t owner[2] = {ClipTriangles::kNoOwner, ClipTriangles::kNoOwner};
+    if (skip_own_quads && !volume.zfail) {
+      const Edge& edge = adjacency.edges[e.edge];
+      int owners = 0;
+      for (uint32_t u = edge.first_use; u < edge.first_use + edge.use_count && owners < 2; ++u) {
+        const uint32_t t = adjacency.uses[u].triangle;
+        if (eyeOnCentreSide(mesh, t, eye, light)) owner[owners++] = first_id + t;
+      }
+    }
     // Quad (v1, v0, v0', v1') as two triangles sharing the diagonal v1-v0'.
-    out.add(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags);
-    out.add(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags);
+    out.addOwned(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags, owner[0],
+                 owner[1]);
+    out.addOwned(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags,
+                 owner[0], owner[1]);
   }
   // z-pass: caps are never in front of a visible point (volume_technique.cpp).
   if (!volume.zfail) return;
@@ -40,7 +75,8 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
       CasterVolume volume =
           casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
       stats.silhouette_edges += volume.silhouette.edges.size();
-      appendVolumePolygons(scene.meshes[m], centre, view, volume, polygons);
+      appendVolumePolygons(scene.meshes[m], scene.adjacency[m], scene.triangle_offsets[m],
+                           centre, view, options.skip_own_quads, volume, polygons);
     }
   }
   Image<int32_t> stencil(view.width, view.height, 0);
@@ -49,6 +85,7 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
     StencilOptions stencil_options;
     stencil_options.simd = options.simd;
     stencil_options.two_level = options.two_level_stencil;
+    if (options.skip_own_quads) stencil_options.primitive = &eye.primitive;
     rasterizeStencil(polygons, eye.depth, stencil, stats, stencil_options);
   }
   return stencil;

@@ -20,6 +20,10 @@ struct ShadowStencilOptions {
   CasterPolicy policy = CasterPolicy::Auto;
   bool two_level_stencil = true;
   bool simd = true;
+  // z-pass quads are not counted at the pixels of the triangles that use their edge and face
+  // the light centre from the eye's side (shadow_stencil.cpp says why). The hard volumes and
+  // the wedges keep the depth test (their images are compared bit for bit); exact needs it.
+  bool skip_own_quads = false;
 };
 
 // Fills the passes "silhouette" and "volumes" of `stats` and its counters.
