@@ -10,6 +10,7 @@
 
 #include "scene/generators.h"
 #include "scene/repeated_triangles.h"
+#include "scene/scene_file.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
 #include "eye_frame_util.h"
@@ -135,6 +136,57 @@ TEST(WedgeUnusualInput, EveryTriangleDoubledRendersAsTheSingleMesh) {
           << technique << " on " << caster.name << " doubled";
     }
   }
+}
+
+}  // namespace
+}  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// A light whose radius reaches a silhouette edge has no wedge planes there (they must touch the
+// sphere from outside, 2002 paper, section 4.1): every wedge technique refuses the frame and
+// says which light, mesh and edge, and the largest radius that works. Before, the quad's
+// shadow came out as a dark star with streaks (radius 2 at distance 1.51) and, at radius 100,
+// as half-black floors.
+TEST(WedgeUnusualInput, LightReachingASilhouetteEdgeIsRefusedByName) {
+  // The quad's nearest silhouette edge, x = 0.5 at height 1, is sqrt(1.5^2 + 0.2^2) = 1.513
+  // from the light centre.
+  const vec3 centre(0.3f, 2.5f, 0.2f);
+  for (const float radius : {2.0f, 1.52f, 100.0f, 1e38f}) {
+    const Scene scene = sceneWith(floatingQuad(), centre, radius);
+    for (const char* technique : kWedgeTechniques) {
+      const std::string message = test::errorMessage([&] { (void)visibility(technique, scene); });
+      EXPECT_TRUE(test::contains(message, "with radius ")) << message;
+      EXPECT_TRUE(test::contains(message, "reaches silhouette edge")) << message;
+      EXPECT_TRUE(test::contains(message, "of mesh 'quad', 1.51327 from its centre")) << message;
+      EXPECT_TRUE(test::contains(message, "use a radius below 1.51327")) << message;
+    }
+  }
+  // Just inside the limit the wedges build and render (the approximation is then coarse, but
+  // the construction holds).
+  const Scene fits = sceneWith(floatingQuad(), centre, 1.5f);
+  for (const char* technique : kWedgeTechniques) EXPECT_NO_THROW((void)visibility(technique, fits));
+}
+
+// The scene reader refuses radii no technique can use (beyond 1000 times the scene's size) with
+// the file and key; a large radius on a far light (a sun) and one merely larger than the
+// distance to the casters are read (the wedges then decide, above).
+TEST(WedgeUnusualInput, SceneReaderRefusesAbsurdLightRadii) {
+  const auto parse = [](const std::string& center, const std::string& radius) {
+    return parseSceneJson(R"({"meshes": [{"generator": "box", "min": [0, 0, 0], "max": [1, 1, 1]}],
+                              "lights": [{"center": )" + center + R"(, "radius": )" + radius + "}]}",
+                          "scene.json", ".");
+  };
+  std::string message = test::errorMessage([&] { (void)parse("[0, 5, 0]", "1e38"); });
+  EXPECT_TRUE(test::contains(message, "scene.json: lights[0].radius: 1e+38 is larger than the "
+                                      "scene by orders of magnitude"))
+      << message;
+  EXPECT_TRUE(test::contains(message, "at most 5196.15")) << message;  // 1000 * |(1, 5, 1)|
+  message = test::errorMessage([&] { (void)parse("[0, 5, 0]", "1e300"); });
+  EXPECT_TRUE(test::contains(message, "scene.json: lights[0].radius:")) << message;
+  EXPECT_EQ(parse("[0, 5, 0]", "100").lights.at(0).radius, 100.0f);
+  EXPECT_EQ(parse("[0, 1e6, 0]", "5000").lights.at(0).radius, 5000.0f);
 }
 
 }  // namespace
