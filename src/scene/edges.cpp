@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "scene/repeated_triangles.h"
 
 namespace penumbra {
 
@@ -103,6 +104,7 @@ EdgeAdjacency buildEdges(Mesh& mesh) {
   }
   mesh.closed = !adjacency.edges.empty() && adjacency.open_edges == 0 &&
                 adjacency.non_manifold_edges == 0 && adjacency.inconsistent_edges == 0;
+  adjacency.repeated = findRepeatedTriangles(mesh, adjacency);
   return adjacency;
 }
 

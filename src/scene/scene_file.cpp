@@ -43,6 +43,27 @@ void readMaterials(const JsonReader& reader, const Json& value, Scene& scene) {
   }
 }
 
+// A light radius beyond this many times the scene's size is refused: no technique can use it
+// (penumbra wedges need a radius below the distance to every silhouette edge, and the oracle's
+// samples of a sphere that size lose all precision at the scene), so it is a typo or a fuzzer's
+// number. A far, large light (a sun) stays within it: its distance counts in the scene's size.
+constexpr double kMaxLightRadiusOverScene = 1000.0;
+
+void checkLightRadius(const JsonReader& reader, const Scene& scene, const Light& light,
+                      const std::string& path) {
+  Bounds3 bounds;
+  for (const Mesh& mesh : scene.meshes) bounds.extend(mesh.bounds());
+  bounds.extend(light.center);
+  const double size = glm::length(dvec3(bounds.extent()));
+  const double limit = kMaxLightRadiusOverScene * size;
+  if (size > 0.0 && double(light.radius) > limit) {
+    reader.fail(path, fmt::format("{} is larger than the scene by orders of magnitude (the meshes "
+                                  "and the light centre fit in a box {:.6g} across); at most "
+                                  "{:.6g} ({} times that) is accepted",
+                                  light.radius, size, limit, kMaxLightRadiusOverScene));
+  }
+}
+
 void readLights(const JsonReader& reader, const Json& value, Scene& scene) {
   reader.expectArray(value, "lights");
   if (value.empty()) reader.fail("lights", "needs at least one light");
@@ -56,6 +77,7 @@ void readLights(const JsonReader& reader, const Json& value, Scene& scene) {
     if (light.radius < 0.0f) {
       reader.fail(JsonReader::child(path, "radius"), fmt::format("must be >= 0 (got {})", light.radius));
     }
+    checkLightRadius(reader, scene, light, JsonReader::child(path, "radius"));
     light.color = reader.vector3(entry, path, "color", light.color);
     checkNonNegative(reader, light.color, JsonReader::child(path, "color"));
     light.intensity = reader.number(entry, path, "intensity", light.intensity);

@@ -44,30 +44,34 @@ double solidAngle(const dvec3& a, const dvec3& b, const dvec3& c) {
 
 }  // namespace
 
-double windingNumber(const Mesh& mesh, const dvec3& point) {
+double windingNumber(const Mesh& mesh, const dvec3& point, const std::vector<uint8_t>* skip) {
   const size_t n = mesh.triangleCount();
   std::vector<double> omega(n);
   parallelFor((n + 8191) / 8192, [&](size_t chunk) {
     const size_t end = std::min(n, (chunk + 1) * 8192);
     for (size_t t = chunk * 8192; t < end; ++t)
-      omega[t] = solidAngle(dvec3(mesh.vertex(t, 0)) - point, dvec3(mesh.vertex(t, 1)) - point,
-                            dvec3(mesh.vertex(t, 2)) - point);
+      omega[t] = skip != nullptr && (*skip)[t] ? 0.0
+                                               : solidAngle(dvec3(mesh.vertex(t, 0)) - point,
+                                                            dvec3(mesh.vertex(t, 1)) - point,
+                                                            dvec3(mesh.vertex(t, 2)) - point);
   });
   double sum = 0.0;  // in triangle order, so the result does not depend on the thread count
   for (const double o : omega) sum += o;
   return sum / (4.0 * std::numbers::pi);
 }
 
-bool insideClosedMesh(const Mesh& mesh, const dvec3& point) {
+bool insideClosedMesh(const Mesh& mesh, const dvec3& point, const std::vector<uint8_t>* skip) {
   // Directions with no special alignment to axes or to each other; the next is tried when a ray
   // grazes an edge.
-  static const std::array<dvec3, 4> kDirections = {
-      glm::normalize(dvec3(0.5773, 0.6178, 0.5339)), glm::normalize(dvec3(-0.3129, 0.8466, -0.4306)),
-      glm::normalize(dvec3(0.7071, -0.2213, -0.6716)), glm::normalize(dvec3(-0.6109, -0.5521, 0.5673))};
+  static const std::array<dvec3, 4> kDirections = {glm::normalize(dvec3(0.5773, 0.6178, 0.5339)),
+                                                   glm::normalize(dvec3(-0.3129, 0.8466, -0.4306)),
+                                                   glm::normalize(dvec3(0.7071, -0.2213, -0.6716)),
+                                                   glm::normalize(dvec3(-0.6109, -0.5521, 0.5673))};
   for (const dvec3& d : kDirections) {
     int crossings = 0;
     bool ambiguous = false;
     for (size_t t = 0; t < mesh.triangleCount() && !ambiguous; ++t) {
+      if (skip != nullptr && (*skip)[t]) continue;
       const RayHit h = crossRay(point, d, dvec3(mesh.vertex(t, 0)), dvec3(mesh.vertex(t, 1)),
                                 dvec3(mesh.vertex(t, 2)));
       crossings += h == RayHit::Hit;
@@ -86,12 +90,26 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
   const dvec3 l(light);
   // Which facing casts: +1 light-facing only, -1 facing-away only, 0 both (two-sided).
   int cast_only = 0;
-  if (policy != CasterPolicy::TwoSided && mesh.closed) {
-    cast_only = insideClosedMesh(mesh, l) ? -1 : 1;
-  } else if (policy == CasterPolicy::SolidWithHoles && adjacency.inconsistent_edges == 0) {
+  // Wedges cast each surface once: a repeated triangle would double its silhouette edges'
+  // multiplicity and so the penumbra's darkening (repeated_triangles.h). Whether the mesh is
+  // closed or consistently oriented is then judged without the repeats (a box stored twice is
+  // closed). Shadow volumes count the repeats and shade the same, so they keep them.
+  const bool once = policy == CasterPolicy::SolidWithHoles;
+  const bool closed = once ? adjacency.repeated.closed : mesh.closed;
+  const size_t inconsistent =
+      once ? adjacency.repeated.inconsistent_edges : adjacency.inconsistent_edges;
+  std::vector<uint8_t> repeats;
+  if (once && !adjacency.repeated.triangles.empty()) {
+    repeats.assign(n, 0);
+    for (const uint32_t t : adjacency.repeated.triangles) repeats[t] = 1;
+  }
+  const std::vector<uint8_t>* skip = repeats.empty() ? nullptr : &repeats;
+  if (policy != CasterPolicy::TwoSided && closed) {
+    cast_only = insideClosedMesh(mesh, l, skip) ? -1 : 1;
+  } else if (policy == CasterPolicy::SolidWithHoles && inconsistent == 0) {
     // The facing that covers more of the light's view (silhouette.h). A tie (a closed part
     // seen from outside, up to rounding) goes to the light-facing side.
-    cast_only = windingNumber(mesh, l) > 0.0 ? -1 : 1;
+    cast_only = windingNumber(mesh, l, skip) > 0.0 ? -1 : 1;
   }
   // Facing in double: near-edge-on triangles must get one consistent sign for all their edges.
   parallelFor((n + 8191) / 8192, [&](size_t chunk) {
@@ -103,6 +121,8 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
       s.orientation[t] = (cast_only == 0 || facing == cast_only) ? facing : 0;
     }
   });
+  if (skip != nullptr)
+    for (const uint32_t t : adjacency.repeated.triangles) s.orientation[t] = 0;
   for (size_t i = 0; i < adjacency.edges.size(); ++i) {
     const Edge& e = adjacency.edges[i];
     int32_t m = 0;

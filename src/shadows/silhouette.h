@@ -65,9 +65,13 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
 // the signed solid angle of its triangles seen from there over 4 pi, positive where a triangle
 // is seen from its back. 1 inside a closed outward-oriented mesh and 0 outside; for an open
 // mesh, (solid angle of the facing-away triangles - that of the light-facing ones) / 4 pi.
-double windingNumber(const Mesh& mesh, const dvec3& point);
+// `skip`, when given, is a per-triangle mask of triangles to leave out (repeated ones).
+double windingNumber(const Mesh& mesh, const dvec3& point,
+                     const std::vector<uint8_t>* skip = nullptr);
 
-// True when `point` is inside the closed mesh (odd number of crossings of a ray from it).
-bool insideClosedMesh(const Mesh& mesh, const dvec3& point);
+// True when `point` is inside the closed mesh (odd number of crossings of a ray from it), the
+// triangles in `skip` left out.
+bool insideClosedMesh(const Mesh& mesh, const dvec3& point,
+                      const std::vector<uint8_t>* skip = nullptr);
 
 }  // namespace penumbra

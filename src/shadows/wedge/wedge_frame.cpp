@@ -1,10 +1,13 @@
 #include "shadows/wedge/wedge_frame.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "core/parallel.h"
 #include "core/pseudo_angle.h"
+#include "core/error.h"
 #include "shadows/caster_volume.h"
+#include "shadows/wedge/wedge_light_reach.h"
 
 namespace penumbra {
 namespace {
@@ -233,6 +236,8 @@ bool frontIsQuad(const WedgeHull& hull) {
 // casters, like columns, has too few wedges per mesh to split one mesh's work).
 struct MeshWedges {
   CasterVolume volume;
+  // A silhouette edge the light reaches: no wedges are built, the frame is refused.
+  std::optional<EdgeInsideLight> inside_light;
   WedgeSet ws;
   std::vector<WedgeHull> hulls;      // per wedge of ws.wedges, then ws.gap_wedges
   std::vector<ScreenWedge> screens;  // same order; valid where the hull is
@@ -264,6 +269,8 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
   // near-plane test conservative (caster_volume.h).
   p.volume = casterVolume(scene, m, eye, light.center, view, options.volume_mode,
                           soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto, light.radius);
+  p.inside_light = edgeInsideLight(mesh, p.volume.silhouette, light);
+  if (p.inside_light) return p;
   p.ws = buildWedges(mesh, p.volume.silhouette, light);
   const size_t n_wedges = p.wedgeCount();
   p.hulls.resize(n_wedges);
@@ -301,6 +308,17 @@ WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
   parallelFor(scene.meshes.size(), [&](size_t m) {
     prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);
   });
+  // The nearest edge the light reaches (the first mesh's on a tie, whatever the thread count):
+  // its distance is the largest radius the frame's wedges could take.
+  size_t reached = scene.meshes.size();
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    if (prepared[m].inside_light &&
+        (reached == scene.meshes.size() ||
+         prepared[m].inside_light->distance < prepared[reached].inside_light->distance))
+      reached = m;
+  if (reached < scene.meshes.size())
+    throw Error(
+        edgeInsideLightMessage(scene.meshes[reached], light, *prepared[reached].inside_light));
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     MeshWedges& p = prepared[m];
