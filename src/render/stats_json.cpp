@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "render/image_io.h"
+#include "scene/mesh_report.h"
 
 namespace penumbra {
 namespace {
@@ -41,6 +42,26 @@ double meanVisibility(const Image<float>& visibility, const EyeBuffers& eye) {
     ++count;
   }
   return count ? sum / double(count) : 1.0;
+}
+
+// What loading made of each mesh (scene/mesh_report.h), the numbers `render` prints per mesh.
+json meshStatsJson(const Scene& scene) {
+  json meshes = json::array();
+  for (size_t i = 0; i < scene.meshes.size() && i < scene.adjacency.size(); ++i) {
+    const MeshReport r = reportMesh(scene.meshes[i], scene.adjacency[i]);
+    meshes.push_back({{"name", r.name},
+                      {"from_file", r.from_file},
+                      {"file_vertices", r.file_vertices},
+                      {"file_triangles", r.file_triangles},
+                      {"triangles", r.triangles},
+                      {"welded_vertices", r.welded_vertices},
+                      {"open_edges", r.open_edges},
+                      {"non_manifold_edges", r.non_manifold_edges},
+                      {"degenerate_dropped", r.degenerate_dropped},
+                      {"components", r.components},
+                      {"warnings", scene.meshes[i].file_counts.warnings}});
+  }
+  return meshes;
 }
 
 int effectiveThreads(const FrameOptions& options) {
@@ -108,6 +129,7 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
       {"scene", scene.name},
       {"triangles", scene.triangleCount()},
       {"meshes", scene.meshes.size()},
+      {"mesh_stats", meshStatsJson(scene)},
       {"width", result.view.width},
       {"height", result.view.height},
       {"technique", technique},

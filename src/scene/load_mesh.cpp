@@ -8,6 +8,7 @@
 #include <assimp/scene.h>
 
 #include "core/error.h"
+#include "scene/load_checks.h"
 #include "scene/normals.h"
 #include "scene/weld.h"
 
@@ -73,6 +74,9 @@ Mesh loadMesh(const std::string& path) {
   PENUMBRA_CHECK(std::filesystem::exists(path, ec), "{}: mesh file not found", path);
   PENUMBRA_CHECK(std::filesystem::is_regular_file(path, ec), "{}: not a regular file", path);
 
+  const PlyHeader ply = readPlyHeader(path);
+  checkPlyDeclaration(path, ply);
+
   Assimp::Importer importer;
   // No JoinIdenticalVertices: welding is ours (weld.h), exact on positions only, so seams that
   // split normals or texture coordinates still share their edges.
@@ -84,6 +88,9 @@ Mesh loadMesh(const std::string& path) {
   gatherNode(*scene, *scene->mRootNode, mat4(1.0f), gathered);
   Mesh& mesh = gathered.mesh;
   mesh.name = std::filesystem::path(path).filename().string();
+  mesh.file_counts.vertices = mesh.positions.size();
+  mesh.file_counts.triangles = mesh.triangleCount();
+  checkLoadedCounts(path, ply, countReferencedVertices(mesh), mesh.file_counts);
   PENUMBRA_CHECK(!mesh.indices.empty(), "{}: the file has no triangles", path);
   for (size_t i = 0; i < mesh.indices.size(); ++i) {
     const vec3& p = mesh.positions[mesh.indices[i]];
@@ -94,7 +101,7 @@ Mesh loadMesh(const std::string& path) {
   }
 
   if (gathered.any_file_normal) mesh.corner_normals = gathered.file_normals;
-  weldPositions(mesh);
+  mesh.file_counts.degenerate_dropped = weldPositions(mesh);
   if (gathered.any_file_normal) {
     // Keep the file's normals, computing only the corners where it had none or a bad one
     // (some exports hold NaN or zero normals).

@@ -31,8 +31,9 @@ std::string lowerExtension(const std::string& path) {
 
 }  // namespace
 
-Scene sceneForMesh(const std::string& path) {
+Scene sceneForMesh(const std::string& path, UpAxis up) {
   Mesh mesh = loadMesh(path);
+  if (up != UpAxis::Y) transformMesh(mesh, upAxisToY(up));
   // Stand the mesh on y = 0, centred on the vertical axis, kMeshSize units along its largest
   // extent, keeping proportions (meshes come in any unit: the bunny is 0.15 wide, the npm teapot
   // 32).
@@ -64,11 +65,19 @@ Scene sceneForMesh(const std::string& path) {
   return scene;
 }
 
-Scene loadScene(const std::string& name_or_path) {
-  if (isBuiltinScene(name_or_path)) return builtinScene(name_or_path);
+Scene loadScene(const std::string& name_or_path, UpAxis mesh_up) {
   const std::string ext = lowerExtension(name_or_path);
+  const bool mesh_file = !isBuiltinScene(name_or_path) && ext != ".json" && !ext.empty() &&
+                         Assimp::Importer().IsExtensionSupported(ext);
+  // A scene names each mesh's up axis itself ("up" in a mesh entry); one axis for all would
+  // turn its generated floor too.
+  PENUMBRA_CHECK(mesh_up == UpAxis::Y || mesh_file,
+                 "{}: an up axis other than y applies to a mesh file; in a scene file give "
+                 "\"up\" in each mesh entry",
+                 name_or_path);
+  if (isBuiltinScene(name_or_path)) return builtinScene(name_or_path);
   if (ext == ".json") return loadSceneFile(name_or_path);
-  if (!ext.empty() && Assimp::Importer().IsExtensionSupported(ext)) return sceneForMesh(name_or_path);
+  if (mesh_file) return sceneForMesh(name_or_path, mesh_up);
   throw Error(fmt::format(
       "unknown scene '{}': not a built-in scene ({}), a .json scene file or a mesh file "
       "(.obj, .ply, .gltf, .glb, .stl, .off, .fbx, ...)",

@@ -123,7 +123,23 @@ void readCamera(const JsonReader& reader, const Json& value, Camera& camera) {
 
 std::string modelsDirectory() {
   if (const char* env = std::getenv("PENUMBRA_MODELS"); env != nullptr && *env != '\0') return env;
-  return fs::path(PENUMBRA_DEFAULT_MODELS_DIR).lexically_normal().string();
+  // The developers' shared folder beside the source tree wins when it exists; users have the
+  // cache that scripts/fetch-models.sh fills.
+  const fs::path shared = fs::path(PENUMBRA_DEFAULT_MODELS_DIR).lexically_normal();
+  std::error_code ec;
+  if (fs::is_directory(shared, ec)) return shared.string();
+  return userModelsCache();
+}
+
+std::string userModelsCache() {
+  // The XDG base directory specification: $XDG_CACHE_HOME, else ~/.cache.
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg == '/') {
+    return (fs::path(xdg) / "penumbra" / "models").string();
+  }
+  const char* home = std::getenv("HOME");
+  return (fs::path(home != nullptr && *home != '\0' ? home : ".") / ".cache" / "penumbra" /
+          "models")
+      .string();
 }
 
 Scene loadSceneFile(const std::string& path) {

@@ -14,6 +14,7 @@
 #include "scene/scene_file_impl.h"
 #include "scene/shapes.h"
 #include "scene/teapot.h"
+#include "scene/up_axis.h"
 
 namespace penumbra {
 
@@ -154,18 +155,34 @@ Mesh readFileMesh(const JsonReader& reader, const Json& entry, const std::string
                   const std::string& base_dir) {
   std::vector<std::string_view> keys = kCommonKeys;
   keys.push_back("file");
+  keys.push_back("up");
   reader.expectObject(entry, path, keys);
   const std::string file_path = JsonReader::child(path, "file");
   const std::string file = reader.string(entry["file"], file_path);
   const std::string resolved = resolveMeshPath(file, base_dir);
   std::error_code ec;
   if (file.starts_with(kModelsPrefix) && !fs::exists(resolved, ec)) {
-    reader.fail(file_path, fmt::format("{} is not in the models folder {} (set PENUMBRA_MODELS "
-                                       "to the folder holding the shared models)",
+    reader.fail(file_path, fmt::format("{} is not in the models folder {} (run "
+                                       "scripts/fetch-models.sh, or set PENUMBRA_MODELS to a "
+                                       "folder holding it; 'penumbra scenes' lists what is "
+                                       "missing)",
                                        file, modelsDirectory()));
   }
+  UpAxis up = UpAxis::Y;
+  if (const Json* value = JsonReader::find(entry, "up")) {
+    const std::string up_path = JsonReader::child(path, "up");
+    try {
+      up = parseUpAxis(reader.string(*value, up_path));
+    } catch (const Error& e) {
+      if (std::string(e.what()).starts_with(reader.origin() + ":")) throw;
+      reader.fail(up_path, e.what());
+    }
+  }
   try {
-    return loadMesh(resolved);
+    Mesh mesh = loadMesh(resolved);
+    // Stood up first, so that "fit" and "transform" work on the y-up mesh.
+    if (up != UpAxis::Y) transformMesh(mesh, upAxisToY(up));
+    return mesh;
   } catch (const Error& e) {
     reader.fail(file_path, e.what());
   }

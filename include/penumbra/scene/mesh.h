@@ -10,6 +10,17 @@
 
 namespace penumbra {
 
+// What a loader read from a mesh file, before welding (src/scene/mesh_report.h prints it). All
+// zero for generated meshes.
+struct MeshFileCounts {
+  size_t vertices = 0;            // as the loader delivers them (OBJ: one per face corner)
+  size_t triangles = 0;           // after triangulating polygons, before dropping degenerate ones
+  size_t degenerate_dropped = 0;  // triangles welding made degenerate (a repeated vertex)
+  // Problems that still left a mesh, e.g. most vertices used by no triangle: printed as
+  // warnings, never dropped silently.
+  std::vector<std::string> warnings;
+};
+
 struct Mesh {
   std::string name;                // file name or generator name, for messages
   std::vector<vec3> positions;     // welded: no two are bitwise equal (and no -0.0)
@@ -21,6 +32,7 @@ struct Mesh {
   // True when every edge is shared by exactly two triangles that traverse it in opposite
   // directions (a closed, consistently oriented 2-manifold). Set by buildEdges().
   bool closed = false;
+  MeshFileCounts file_counts;      // filled by loadMesh
 
   size_t triangleCount() const { return indices.size() / 3; }
   vec3 vertex(size_t triangle, int corner) const {

@@ -7,14 +7,18 @@
 namespace penumbra {
 
 // Reads a scene file. Relative mesh paths are relative to the scene file's folder; a path
-// starting with "models:" is looked up in $PENUMBRA_MODELS (default ../shared/models beside the
-// source tree). Throws penumbra::Error naming the file and the offending key.
+// starting with "models:" is looked up in modelsDirectory(). Throws penumbra::Error naming the
+// file and the offending key.
 Scene loadSceneFile(const std::string& path);
 // Same, from JSON text; `origin` names the text in messages, `base_dir` resolves relative paths.
 Scene parseSceneJson(const std::string& text, const std::string& origin,
                      const std::string& base_dir);
 
-// Folder holding the shared test models: $PENUMBRA_MODELS, else PENUMBRA_DEFAULT_MODELS_DIR.
+// The folder "models:NAME" paths are looked up in, the first of: $PENUMBRA_MODELS when set;
+// ../shared/models beside the source tree when that folder exists (developers); the user's
+// cache, userModelsCache(), which scripts/fetch-models.sh fills.
 std::string modelsDirectory();
+// $XDG_CACHE_HOME/penumbra/models, else ~/.cache/penumbra/models.
+std::string userModelsCache();
 
 }  // namespace penumbra

@@ -1,0 +1,28 @@
+#pragma once
+// What a PLY file's header declares, read before the file goes to assimp so that the file can
+// be held against its own declaration, and what assimp returns against both (load_checks.h).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace penumbra {
+
+struct PlyElement {
+  std::string name;    // "vertex", "face", "tristrips", ...
+  uint64_t count = 0;
+};
+
+struct PlyHeader {
+  bool is_ply = false;  // starts with "ply" and has a readable header up to "end_header"
+  bool ascii = false;   // "format ascii"
+  std::vector<PlyElement> elements;  // in header order
+  // Non-blank lines after end_header in an ASCII file: one per element instance when the file
+  // is what its header says.
+  uint64_t ascii_body_lines = 0;
+};
+
+// Reads the header (and, for ASCII files, counts the body's lines). is_ply is false when the
+// file does not start with "ply" or its header cannot be read as one; assimp then reports it.
+PlyHeader readPlyHeader(const std::string& path);
+
+}  // namespace penumbra
