@@ -21,8 +21,14 @@ for p in "${packages[@]}"; do
   fi
 done
 
+# npm (with node) fetches the models (scripts/fetch-models.sh). A node installed outside
+# Debian's packages serves as well, so it is looked up on PATH, not in dpkg.
+if ! command -v npm >/dev/null 2>&1 || ! command -v node >/dev/null 2>&1; then
+  missing+=(npm)
+fi
+
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "setup: all ${#packages[@]} packages already installed"
+  echo "setup: all ${#packages[@]} packages and npm already installed"
   exit 0
 fi
 
