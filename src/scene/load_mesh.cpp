@@ -8,6 +8,7 @@
 #include <assimp/scene.h>
 
 #include "core/error.h"
+#include "scene/assimp_read.h"
 #include "scene/normals.h"
 #include "scene/weld.h"
 
@@ -76,8 +77,7 @@ Mesh loadMesh(const std::string& path) {
   Assimp::Importer importer;
   // No JoinIdenticalVertices: welding is ours (weld.h), exact on positions only, so seams that
   // split normals or texture coordinates still share their edges.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
-  PENUMBRA_CHECK(scene != nullptr, "{}: cannot read mesh: {}", path, importer.GetErrorString());
+  const aiScene* scene = &readTriangulatedScene(importer, path);
   PENUMBRA_CHECK(scene->mRootNode != nullptr, "{}: the file holds no scene graph", path);
 
   Gathered gathered;
