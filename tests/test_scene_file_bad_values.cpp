@@ -71,16 +71,27 @@ TEST(SceneFileBadValues, FitOfTinyAndHugeMeshesWorks) {
   }
 }
 
-// A mesh file (not a scene file) 1e-13 or 1e15 units across renders framed like any other.
+// A mesh file (not a scene file) 1e-30 to 1e30 units across is framed like the same mesh at
+// size 1, with the same normals: the float cross products of a tiny mesh's faces underflowed
+// and every corner got the default +y normal (wrong shading, no message).
 TEST(SceneFileBadValues, MeshFilesOfExtremeSizeAreFramed) {
   ScratchDir dir;
-  for (const char* size : {"1e-13", "1e15"}) {
-    const std::string path = dir.write(
-        "tiny.obj", fmt::format("v 0 0 0\nv {0} 0 0\nv 0 {0} 0\nv 0 0 {0}\nf 1 3 2\nf 1 2 4\n"
-                                "f 1 4 3\nf 2 3 4\n",
-                                size));
-    const Scene scene = loadScene(path);
+  auto tetrahedron = [&](const char* size) {
+    return loadScene(dir.write(
+        fmt::format("tet{}.obj", size),
+        fmt::format("v 0 0 0\nv {0} 0 0\nv 0 {0} 0\nv 0 0 {0}\nf 1 3 2\nf 1 2 4\nf 1 4 3\n"
+                    "f 2 3 4\n",
+                    size)));
+  };
+  const Scene unit = tetrahedron("1");
+  for (const char* size : {"1e-30", "1e-13", "1e15", "1e30"}) {
+    const Scene scene = tetrahedron(size);
     EXPECT_NEAR(scene.meshes[0].bounds().extent().y, 2.0f, 1e-4f) << size;
+    ASSERT_EQ(scene.meshes[0].corner_normals.size(), unit.meshes[0].corner_normals.size());
+    for (size_t i = 0; i < unit.meshes[0].corner_normals.size(); ++i) {
+      const vec3 d = scene.meshes[0].corner_normals[i] - unit.meshes[0].corner_normals[i];
+      EXPECT_LT(glm::length(d), 1e-5f) << size << " corner " << i;
+    }
   }
 }
 

@@ -16,7 +16,7 @@ namespace {
 // matrix that scales by 1e20 or 1e-20): those are scaled to their largest component first.
 vec3 normalizeWide(const vec3& v) {
   const vec3 n = glm::normalize(v);
-  if (isFinite(n)) return n;
+  if (isFinite(n) && n != vec3(0.0f)) return n;  // an overflowed length gives zero
   const float largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
   return largest > 0.0f && std::isfinite(largest) ? glm::normalize(v / largest) : n;
 }
@@ -42,10 +42,14 @@ void transformMesh(Mesh& mesh, const mat4& transform) {
                    p.x, p.y, p.z);
     mesh.positions[i] = p;
   }
+  // The inverse in float, unless the float determinant overflows (a scale of 2e13: the inverse
+  // would come out zero) or is subnormal (2e-15: infinite): then in double.
   const float float_det = glm::determinant(linear);
-  const mat3 normal_matrix = std::isfinite(float_det) && float_det != 0.0f
-                                 ? glm::transpose(glm::inverse(linear))
-                                 : mat3(glm::transpose(glm::inverse(glm::dmat3(linear))));
+  mat3 normal_matrix = std::isnormal(float_det) ? glm::transpose(glm::inverse(linear)) : mat3(0.0f);
+  if (!std::isnormal(float_det) || !isFinite(normal_matrix[0]) || !isFinite(normal_matrix[1]) ||
+      !isFinite(normal_matrix[2])) {
+    normal_matrix = mat3(glm::transpose(glm::inverse(glm::dmat3(linear))));
+  }
   for (vec3& n : mesh.corner_normals) n = normalizeWide(normal_matrix * n);
   if (det < 0.0) {
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
