@@ -12,7 +12,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string empty_dir = [] {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "penumbra-fuzz-empty";
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "penumbra-fuzz-empty";
     std::filesystem::create_directories(dir);
     setenv("PENUMBRA_MODELS", dir.c_str(), 1);
     return dir.string();

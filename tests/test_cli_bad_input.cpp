@@ -53,7 +53,8 @@ TEST_F(CliBadInput, TwoOutputsNamingOneFileAreRefused) {
 
 // --rays with --hard was silently ignored (the oracle casts one ray per pixel).
 TEST_F(CliBadInput, RaysWithHardIsAnError) {
-  expectError(run(kTiny + "--technique reference --hard --rays 64"), "--rays has no effect with --hard");
+  expectError(run(kTiny + "--technique reference --hard --rays 64"),
+              "--rays has no effect with --hard");
 }
 
 // A 74-byte PNG whose header claims 100000 x 100000 pixels: 4.1 GB were allocated (the size

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
-#include <string>
 
 #include "cli_test_util.h"
 #include "core/error.h"
@@ -37,8 +37,7 @@ TEST(OutputWriteFailures, FullDeviceIsAnErrorForEveryFormat) {
   if (!haveDevFull()) GTEST_SKIP() << "no /dev/full";
   const Image<float> gray(4, 3, 0.5f);
   const Image<vec3> color(4, 3, vec3(0.5f));
-  for (const auto& [what, write] :
-       std::vector<std::pair<std::string, std::function<void()>>>{
+  for (const auto& [what, write] : std::vector<std::pair<std::string, std::function<void()>>>{
            {"EXR", [&] { writeExr("/dev/full", gray); }},
            {"PNG", [&] { writePng("/dev/full", color); }},
            {"PNG", [&] { writePngGray("/dev/full", gray); }},
@@ -52,7 +51,8 @@ TEST(OutputWriteFailures, FullDeviceIsAnErrorForEveryFormat) {
 
 // A target whose folder cannot be created (its parent is a file): an error, nothing written.
 TEST(OutputWriteFailures, UncreatableFolderIsAnError) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("penumbra-write-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("penumbra-write-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "file") << "x";
   const std::string target = (dir / "file" / "out.exr").string();
@@ -63,7 +63,8 @@ TEST(OutputWriteFailures, UncreatableFolderIsAnError) {
 
 // A successful write replaces the target whole and leaves no temporary file beside it.
 TEST(OutputWriteFailures, SuccessfulWriteLeavesOnlyTheTarget) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("penumbra-write-ok-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("penumbra-write-ok-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string target = (dir / "v.exr").string();

@@ -60,11 +60,11 @@ TEST(SceneFileBadValues, TransformOverflowNamesFileAndKey) {
 // underflows or overflows was refused as singular. It now fits.
 TEST(SceneFileBadValues, FitOfTinyAndHugeMeshesWorks) {
   for (const char* extent : {"1e-13", "1e15", "1e30"}) {
-    const Scene scene = parseSceneJson(
-        sceneWithMesh(fmt::format(R"({{"generator": "box", "min": [0, 0, 0],
+    const Scene scene =
+        parseSceneJson(sceneWithMesh(fmt::format(R"({{"generator": "box", "min": [0, 0, 0],
                                        "max": [{0}, {0}, {0}], "fit": 2}})",
-                                  extent)),
-        "fit.json", "");
+                                                 extent)),
+                       "fit.json", "");
     const Bounds3 b = scene.meshes[0].bounds();
     EXPECT_NEAR(b.extent().x, 2.0f, 1e-4f) << extent;
     EXPECT_NEAR(b.min.y, 0.0f, 1e-4f) << extent;
@@ -110,9 +110,8 @@ TEST(SceneFileBadValues, FarCameraGetsARangeMessage) {
 
 // A NUL inside a file name cut every message quoting it at the NUL.
 TEST(SceneFileBadValues, NulInAStringIsRefusedWithTheKey) {
-  const std::string message = errorMessage([&] {
-    parseSceneJson(sceneWithMesh(R"({"file": "a\u0000b.obj"})"), "nul.json", "");
-  });
+  const std::string message = errorMessage(
+      [&] { parseSceneJson(sceneWithMesh(R"({"file": "a\u0000b.obj"})"), "nul.json", ""); });
   EXPECT_TRUE(contains(message, "nul.json: meshes[0].file: the string contains a NUL character"))
       << message;
 }

@@ -56,9 +56,10 @@ const char* kAsciiHeader =
 TEST(SceneHostileMeshFiles, GoodPlyFilesLoad) {
   ScratchDir dir;
   EXPECT_EQ(loadMesh(dir.write("a.ply", binaryTriangle("1", 0, 1, 2))).triangleCount(), 1u);
-  EXPECT_EQ(loadMesh(dir.write("b.ply", std::string(kAsciiHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
-                .triangleCount(),
-            1u);
+  EXPECT_EQ(
+      loadMesh(dir.write("b.ply", std::string(kAsciiHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+          .triangleCount(),
+      1u);
 }
 
 // Negative and out-of-range face indices were read by loadMesh before any range check
@@ -71,7 +72,8 @@ TEST(SceneHostileMeshFiles, PlyIndicesOutOfRangeAreRefused) {
     EXPECT_TRUE(contains(message, "bad.ply")) << message;
     EXPECT_TRUE(contains(message, "out of range")) << message;
   }
-  const std::string ascii = dir.write("ascii.ply", std::string(kAsciiHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 -5 2\n");
+  const std::string ascii =
+      dir.write("ascii.ply", std::string(kAsciiHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 -5 2\n");
   EXPECT_TRUE(contains(errorMessage([&] { loadMesh(ascii); }), "out of range"));
 }
 
@@ -168,7 +170,8 @@ TEST(SceneHostileMeshFiles, ObjFaceWithTooManyCornersIsRefusedQuickly) {
   const std::string message = errorMessage([&] { loadMesh(path); });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_TRUE(contains(message, "huge_face.obj: face 0 of mesh 0 has 20000 corners (the limit is 4096)"))
+  EXPECT_TRUE(
+      contains(message, "huge_face.obj: face 0 of mesh 0 has 20000 corners (the limit is 4096)"))
       << message;
   EXPECT_LT(seconds, 5.0);  // the quadratic triangulation took minutes
 }
@@ -178,8 +181,8 @@ TEST(SceneHostileMeshFiles, ObjFaceWithTooManyCornersIsRefusedQuickly) {
 TEST(SceneHostileMeshFiles, GlbChunkLongerThanTheFileIsRefused) {
   ScratchDir dir;
   const std::string json = R"({"asset":{"version":"2.0"}})";
-  std::string glb = "glTF" + le32(2) + le32(uint32_t(12 + 8 + json.size())) +
-                    le32(0x80000000u) + "JSON" + json;
+  std::string glb =
+      "glTF" + le32(2) + le32(uint32_t(12 + 8 + json.size())) + le32(0x80000000u) + "JSON" + json;
   const std::string path = dir.write("big.glb", glb);
   const std::string message = errorMessage([&] { loadMesh(path); });
   EXPECT_TRUE(contains(message, "big.glb: invalid GLB: chunk 0 says 2147483648 bytes")) << message;

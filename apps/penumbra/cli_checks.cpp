@@ -1,10 +1,10 @@
 #include "cli_checks.h"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <filesystem>
 #include <system_error>
-
-#include <fmt/format.h>
 
 #include "core/error.h"
 
@@ -19,7 +19,8 @@ CLI::Validator wholeNumberIn(long long min, long long max) {
         if (ec == std::errc::result_out_of_range) {
           return fmt::format("{} is not in {}..{}", text, min, max);
         }
-        if (ec != std::errc() || stop != end) return fmt::format("'{}' is not a whole number", text);
+        if (ec != std::errc() || stop != end)
+          return fmt::format("'{}' is not a whole number", text);
         if (value < min || value > max) return fmt::format("{} is not in {}..{}", value, min, max);
         return std::string();
       },

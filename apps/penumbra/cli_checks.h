@@ -1,10 +1,9 @@
 #pragma once
 // Checks of command-line values that CLI11 does not make, shared by the subcommands.
+#include <CLI/CLI.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 namespace penumbra::cli {
 

@@ -96,11 +96,12 @@ int runRender(const RenderArgs& args) {
 
   // An output given as '' is a mistake, not a request for the default or for no file.
   for (const char* flag : {"--output", "--visibility", "--visibility-png", "--depth", "--stats"}) {
-    PENUMBRA_CHECK(args.command->count(flag) == 0 || !args.command->get_option(flag)->as<std::string>().empty(),
+    const CLI::Option* option = args.command->get_option(flag);
+    PENUMBRA_CHECK(option->count() == 0 || !option->as<std::string>().empty(),
                    "{} is given an empty file name", flag);
   }
   // --rays with --hard would be ignored: the oracle casts one ray per pixel.
-  if (options.technique.info().options.find("rays") != nullptr && args.command->count("--rays") > 0 &&
+  if (args.command->count("--rays") > 0 && options.technique.info().options.find("hard") &&
       options.technique.get("hard") == "true") {
     throw Error("--rays has no effect with --hard (one ray per pixel to the light centre)");
   }

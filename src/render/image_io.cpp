@@ -295,8 +295,9 @@ Image<float> readExr(const std::string& path) {
     throw Error(fmt::format("cannot read EXR '{}': {}", path, takeExrError(err)));
   }
   h.parsed = true;
-  checkReadSize(path, "EXR", uint64_t(int64_t(h.header.data_window.max_x) - h.header.data_window.min_x + 1),
-                uint64_t(int64_t(h.header.data_window.max_y) - h.header.data_window.min_y + 1));
+  const EXRBox2i& window = h.header.data_window;
+  checkReadSize(path, "EXR", uint64_t(int64_t(window.max_x) - window.min_x + 1),
+                uint64_t(int64_t(window.max_y) - window.min_y + 1));
   PENUMBRA_CHECK(!h.header.tiled, "EXR '{}' is tiled; only scanline files are read", path);
   PENUMBRA_CHECK(h.header.num_channels > 0, "EXR '{}' has no channels", path);
   for (int c = 0; c < h.header.num_channels; ++c) {

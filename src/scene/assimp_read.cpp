@@ -1,12 +1,12 @@
 #include "scene/assimp_read.h"
 
+#include <assimp/postprocess.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <assimp/postprocess.h>
 
 #include "core/error.h"
 #include "scene/glb_check.h"
@@ -42,8 +42,8 @@ void checkPolygonsAndTypes(aiScene& scene, const std::string& path) {
       const unsigned corners = mesh.mFaces[f].mNumIndices;
       PENUMBRA_CHECK(corners > 0, "{}: face {} of mesh {} has no corners", path, f, m);
       PENUMBRA_CHECK(corners <= kMaxPolygonCorners,
-                     "{}: face {} of mesh {} has {} corners (the limit is {})", path, f, m,
-                     corners, kMaxPolygonCorners);
+                     "{}: face {} of mesh {} has {} corners (the limit is {})", path, f, m, corners,
+                     kMaxPolygonCorners);
       types |= corners == 1   ? aiPrimitiveType_POINT
                : corners == 2 ? aiPrimitiveType_LINE
                : corners == 3 ? aiPrimitiveType_TRIANGLE

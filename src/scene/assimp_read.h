@@ -3,10 +3,10 @@
 // containers are checked before assimp sees them (ply_check.h, glb_check.h), assimp's own
 // validation runs before any post-processing, and polygons too large to triangulate in
 // reasonable time are refused before triangulation.
-#include <string>
+#include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
-#include <assimp/scene.h>
+#include <string>
 
 namespace penumbra {
 

@@ -41,8 +41,7 @@ void checkGlbBytes(const std::string& path, std::string_view bytes) {
   int chunk = 0;
   PENUMBRA_CHECK(length >= kHeader + 8, "{}: invalid GLB: no JSON chunk", path);
   while (at < length) {
-    PENUMBRA_CHECK(length - at >= 8, "{}: invalid GLB: chunk {}'s header is cut off", path,
-                   chunk);
+    PENUMBRA_CHECK(length - at >= 8, "{}: invalid GLB: chunk {}'s header is cut off", path, chunk);
     const uint64_t chunk_length = readU32(bytes, at);
     PENUMBRA_CHECK(chunk_length <= length - at - 8,
                    "{}: invalid GLB: chunk {} says {} bytes, only {} follow its header", path,

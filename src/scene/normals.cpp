@@ -46,7 +46,8 @@ void computeCornerNormals(Mesh& mesh, float crease_degrees) {
     const vec3 reach = glm::max(glm::abs(b - a), glm::abs(c - a));
     if (unit[t] == vec3(0.0f) &&
         (std::max({reach.x, reach.y, reach.z}) < kTinyEdge || !isFinite(weighted[t]))) {
-      unit[t] = unitOrZero(vec3(glm::normalize(glm::cross(glm::dvec3(b - a), glm::dvec3(c - a)))));
+      const glm::dvec3 wide = glm::cross(glm::dvec3(b - a), glm::dvec3(c - a));
+      unit[t] = unitOrZero(vec3(glm::normalize(wide)));
     }
   }
 

@@ -24,11 +24,11 @@ enum class Format { Ascii, BinaryLittle, BinaryBig };
 
 struct Property {
   std::string name;
-  int size = 0;         // bytes of the value (binary); 0 never
+  int size = 0;  // bytes of the value (binary); 0 never
   bool is_float = false;
   bool is_signed = false;
   bool is_list = false;
-  int count_size = 0;   // lists: bytes of the count
+  int count_size = 0;  // lists: bytes of the count
   bool count_signed = false;
   bool count_float = false;
 };
@@ -47,11 +47,11 @@ struct ScalarType {
 };
 
 constexpr ScalarType kScalarTypes[] = {
-    {"char", 1, false, true},    {"int8", 1, false, true},     {"uchar", 1, false, false},
-    {"uint8", 1, false, false},  {"short", 2, false, true},    {"int16", 2, false, true},
-    {"ushort", 2, false, false}, {"uint16", 2, false, false},  {"int", 4, false, true},
-    {"int32", 4, false, true},   {"uint", 4, false, false},    {"uint32", 4, false, false},
-    {"float", 4, true, true},    {"float32", 4, true, true},   {"double", 8, true, true},
+    {"char", 1, false, true},    {"int8", 1, false, true},    {"uchar", 1, false, false},
+    {"uint8", 1, false, false},  {"short", 2, false, true},   {"int16", 2, false, true},
+    {"ushort", 2, false, false}, {"uint16", 2, false, false}, {"int", 4, false, true},
+    {"int32", 4, false, true},   {"uint", 4, false, false},   {"uint32", 4, false, false},
+    {"float", 4, true, true},    {"float32", 4, true, true},  {"double", 8, true, true},
     {"float64", 8, true, true},
 };
 
@@ -105,7 +105,8 @@ class PlyChecker {
  private:
   template <typename... Args>
   [[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) const {
-    throw Error(fmt::format("{}: invalid PLY: {}", path_, fmt::format(format, std::forward<Args>(args)...)));
+    throw Error(fmt::format("{}: invalid PLY: {}", path_,
+                            fmt::format(format, std::forward<Args>(args)...)));
   }
 
   void readHeader() {
@@ -192,7 +193,8 @@ class PlyChecker {
       const ScalarType* count = findType(words[2]);
       const ScalarType* value = findType(words[3]);
       if (!count || !value) fail("header line {}: unknown type in a list property", line_number);
-      if (count->is_float) fail("header line {}: a list count must be an integer type", line_number);
+      if (count->is_float)
+        fail("header line {}: a list count must be an integer type", line_number);
       p.is_list = true;
       p.count_size = count->size;
       p.count_signed = count->is_signed;
@@ -203,9 +205,10 @@ class PlyChecker {
       return p;
     }
     if (words.size() != 3) {
-      fail("header line {}: expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE "
-           "NAME'",
-           line_number);
+      fail(
+          "header line {}: expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE "
+          "NAME'",
+          line_number);
     }
     const ScalarType* type = findType(words[1]);
     if (!type) fail("header line {}: unknown property type '{}'", line_number, words[1]);
@@ -256,15 +259,16 @@ class PlyChecker {
   void checkIndex(const Element& e, uint64_t item, double index) const {
     const double lowest = e.name == "tristrips" ? -1.0 : 0.0;
     if (!(index >= lowest && index < double(vertex_count_)) || index != double(int64_t(index))) {
-      fail("{} {}: vertex index {} is out of range (the file has {} vertices)", e.name, item,
-           index, vertex_count_);
+      fail("{} {}: vertex index {} is out of range (the file has {} vertices)", e.name, item, index,
+           vertex_count_);
     }
   }
 
   [[noreturn]] void cutOff(const Element& e, uint64_t item) const {
-    fail("the body is cut off: element '{}' item {} of {} ends past the end of the file "
-         "({} bytes)",
-         e.name, item, e.count, bytes_.size());
+    fail(
+        "the body is cut off: element '{}' item {} of {} ends past the end of the file "
+        "({} bytes)",
+        e.name, item, e.count, bytes_.size());
   }
 
   void walkBinary() const {
@@ -272,9 +276,10 @@ class PlyChecker {
     // assimp's header reader takes a line end right after end_header's as part of the header
     // and starts the body one byte late, misreading every value (and reading past the end).
     if (at < bytes_.size() && (bytes_[at] == '\n' || bytes_[at] == '\r')) {
-      fail("the binary body starts with a line-end byte (0x{:02x}), which assimp 5.2 skips as "
-           "part of the header: it would misread every value after it",
-           unsigned(static_cast<unsigned char>(bytes_[at])));
+      fail(
+          "the binary body starts with a line-end byte (0x{:02x}), which assimp 5.2 skips as "
+          "part of the header: it would misread every value after it",
+          unsigned(static_cast<unsigned char>(bytes_[at])));
     }
     for (const Element& e : elements_) {
       if (e.count > 0 && e.properties.empty()) fail("element '{}' has no properties", e.name);
@@ -293,8 +298,8 @@ class PlyChecker {
           const size_t n = size_t(count);
           if (isIndexList(e, p)) {
             for (size_t k = 0; k < n; ++k) {
-              checkIndex(e, item, binaryValue(at + k * size_t(p.size), p.size, p.is_float,
-                                              p.is_signed));
+              checkIndex(e, item,
+                         binaryValue(at + k * size_t(p.size), p.size, p.is_float, p.is_signed));
             }
           }
           at += n * size_t(p.size);
