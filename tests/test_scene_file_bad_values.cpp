@@ -95,6 +95,19 @@ TEST(SceneFileBadValues, MeshFilesOfExtremeSizeAreFramed) {
   }
 }
 
+// A unit box scaled by 1e38 is finite but cannot be framed: the message says so, and names
+// the key, instead of calling the camera's position not finite.
+TEST(SceneFileBadValues, SceneTooLargeToFrameIsNamed) {
+  const std::string message = errorMessage([&] {
+    parseSceneJson(sceneWithMesh(R"({"generator": "box", "min": [0, 0, 0], "max": [1, 1, 1],
+                                     "transform": {"scale": 1e38}})"),
+                   "large.json", "");
+  });
+  EXPECT_TRUE(contains(message, "large.json: camera: not given, and cannot place a camera around "
+                                "the scene"))
+      << message;
+}
+
 // A camera at 1e30 was told its up vector is parallel to the view.
 TEST(SceneFileBadValues, FarCameraGetsARangeMessage) {
   const std::string message = errorMessage([&] {
