@@ -51,10 +51,20 @@ TEST_F(CliBadInput, TwoOutputsNamingOneFileAreRefused) {
   EXPECT_FALSE(fs::exists(path("x.png")));  // refused before rendering
 }
 
-// --rays with --hard was silently ignored (the oracle casts one ray per pixel).
-TEST_F(CliBadInput, RaysWithHardIsAnError) {
+// --rays with --hard, or for a light of radius 0, was silently ignored (the oracle casts one
+// ray per pixel): an error, and a warning naming the light.
+TEST_F(CliBadInput, RaysThatCannotBeCastAreReported) {
   expectError(run(kTiny + "--technique reference --hard --rays 64"),
               "--rays has no effect with --hard");
+  std::ofstream(path("point.json"))
+      << R"({"meshes": [{"generator": "box", "min": [0, 0, 0], "max": [1, 1, 1]}],
+             "lights": [{"center": [0, 5, 0]}], "settings": {"width": 16, "height": 12}})";
+  const CliRun r = run("render point.json --technique reference --rays 64 --quiet");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: --rays is unused for light 0: its radius is 0"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(run(kTiny + "--technique reference --rays 4").err, "");  // spheres: a soft light
 }
 
 // A 74-byte PNG whose header claims 100000 x 100000 pixels: 4.1 GB were allocated (the size

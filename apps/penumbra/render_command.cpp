@@ -107,6 +107,14 @@ int runRender(const RenderArgs& args) {
   }
 
   const Scene scene = loadScene(args.scene);
+  if (args.command->count("--rays") > 0) {
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+      if (scene.lights[i].radius > 0.0f) continue;
+      std::cerr << fmt::format("penumbra: warning: --rays is unused for light {}: its radius is "
+                               "0, so the oracle casts one ray per pixel\n",
+                               i);
+    }
+  }
   const std::string output = args.output.empty() ? defaultOutput(scene.name) : args.output;
   std::vector<NamedOutput> outputs = {{"-o", output}};
   for (size_t i = 0; i < scene.lights.size(); ++i) {
