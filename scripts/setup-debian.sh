@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib
   libegl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

@@ -36,6 +36,14 @@ Image<vec3> asColor(const ImageFile& file) {
   return out;
 }
 
+// A NaN or infinite pixel is a bug in whatever wrote the image: the comparison fails (exit
+// code 1) whatever the tolerance, instead of averaging the NaN away into "MAE 0".
+void failOnNonFinite(const CompareArgs& args, const ImageDifference& d) {
+  PENUMBRA_CHECK(d.count_nonfinite == 0,
+                 "'{}' vs '{}': {} of {} pixels are NaN or infinite in one of the images",
+                 args.a, args.b, d.count_nonfinite, d.pixels);
+}
+
 int runCompare(const CompareArgs& args) {
   PENUMBRA_CHECK(args.tolerance >= 0.0, "--tolerance {} must be a number >= 0", args.tolerance);
   PENUMBRA_CHECK(!args.diff_scale || (*args.diff_scale > 0.0f && std::isfinite(*args.diff_scale)),
@@ -95,19 +103,24 @@ int runCompare(const CompareArgs& args) {
     };
     if (!args.diff.empty()) doc["diff"] = {{"path", args.diff}, {"scale", scale}};
     std::cout << doc.dump(2) << "\n";
+    failOnNonFinite(args, d);
     return 0;
   }
   std::cout << fmt::format("{} vs {}: {}x{} {}\n", args.a, args.b, a.width(), a.height(),
                            gray ? "gray" : "RGB (per-pixel error: largest channel difference)");
-  std::cout << fmt::format("MAE {:.6g}  RMSE {:.6g}  max {:.6g}\n", d.mae, d.rmse, d.max_error);
+  if (d.count_nonfinite > 0) {
+    std::cout << fmt::format("MAE nan  RMSE nan  max nan ({} of {} pixels are NaN or infinite; "
+                             "over the others: MAE {:.6g}  RMSE {:.6g})\n",
+                             d.count_nonfinite, d.pixels, d.mae, d.rmse);
+  } else {
+    std::cout << fmt::format("MAE {:.6g}  RMSE {:.6g}  max {:.6g}\n", d.mae, d.rmse, d.max_error);
+  }
   std::cout << fmt::format("off by more than {:g}: {:.4f}% ({} of {} pixels)\n", args.tolerance,
                            100.0 * d.fraction_over_tolerance, d.count_over_tolerance, d.pixels);
-  if (d.count_nonfinite > 0) {
-    std::cout << fmt::format("non-finite pixels: {}\n", d.count_nonfinite);
-  }
   if (!args.diff.empty()) {
     std::cout << fmt::format("wrote {} (heat map, brightest = error {:g})\n", args.diff, scale);
   }
+  failOnNonFinite(args, d);
   return 0;
 }
 

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cli_checks.h"
 #include "commands.h"
 #include "core/error.h"
 #include "render/frame.h"
@@ -34,6 +35,7 @@ struct TechniqueFlag {
 };
 
 struct RenderArgs {
+  CLI::App* command = nullptr;  // to tell an option given empty ("-o ''") from one not given
   std::string scene;
   std::string output;
   std::string technique = kDefaultTechnique;  // soft shadows; radius-0 lights give hard ones
@@ -108,8 +110,42 @@ int runRender(const RenderArgs& args) {
   requireExtension(args.depth_exr, ".exr", "--depth");
   requireExtension(args.stats_json, ".json", "--stats");
 
+  // An output given as '' is a mistake, not a request for the default or for no file.
+  for (const char* flag : {"--output", "--visibility", "--visibility-png", "--depth", "--stats"}) {
+    const CLI::Option* option = args.command->get_option(flag);
+    PENUMBRA_CHECK(option->count() == 0 || !option->as<std::string>().empty(),
+                   "{} is given an empty file name", flag);
+  }
+  // --rays with --hard would be ignored: the oracle casts one ray per pixel.
+  if (args.command->count("--rays") > 0 && options.technique.info().options.find("hard") &&
+      options.technique.get("hard") == "true") {
+    throw Error("--rays has no effect with --hard (one ray per pixel to the light centre)");
+  }
+
   const Scene scene = loadScene(args.scene, parseUpAxis(args.up));
   printMeshReports(scene, args.quiet);
+  if (args.command->count("--rays") > 0) {
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+      if (scene.lights[i].radius > 0.0f) continue;
+      std::cerr << fmt::format("penumbra: warning: --rays is unused for light {}: its radius is "
+                               "0, so the oracle casts one ray per pixel\n",
+                               i);
+    }
+  }
+  const std::string output = args.output.empty() ? defaultOutput(scene.name) : args.output;
+  std::vector<NamedOutput> outputs = {{"-o", output}};
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    if (!args.visibility_exr.empty()) {
+      outputs.push_back({"--visibility", indexedOutputPath(args.visibility_exr, i)});
+    }
+    if (!args.visibility_png.empty()) {
+      outputs.push_back({"--visibility-png", indexedOutputPath(args.visibility_png, i)});
+    }
+  }
+  if (!args.depth_exr.empty()) outputs.push_back({"--depth", args.depth_exr});
+  if (!args.stats_json.empty()) outputs.push_back({"--stats", args.stats_json});
+  checkDistinctOutputs(outputs);
+
   FrameResult result;
   std::string timings;
   if (args.frames > 0) {
@@ -121,7 +157,6 @@ int runRender(const RenderArgs& args) {
   }
 
   std::vector<std::string> written;
-  const std::string output = args.output.empty() ? defaultOutput(scene.name) : args.output;
   writePng(output, result.color);
   written.push_back(output);
   for (size_t i = 0; i < result.lights.size(); ++i) {
@@ -156,6 +191,7 @@ int runRender(const RenderArgs& args) {
 Subcommand addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render one frame of a scene");
+  args->command = cmd;
   cmd->add_option("scene", args->scene,
                   "Built-in scene name (see 'penumbra scenes'), scene .json file or mesh file")
       ->required();
@@ -182,19 +218,19 @@ Subcommand addRenderCommand(CLI::App& app) {
     args->technique_flags.push_back(std::move(flag));
   }
   cmd->add_option("--width", args->width, "Image width (default: the scene's)")
-      ->check(CLI::Range(1, 8192));
+      ->check(wholeNumberIn(1, 8192));
   cmd->add_option("--height", args->height, "Image height (default: the scene's)")
-      ->check(CLI::Range(1, 8192));
+      ->check(wholeNumberIn(1, 8192));
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
-      ->check(CLI::Range(0, 4096))
+      ->check(wholeNumberIn(0, 4096))
       ->capture_default_str();
   cmd->add_flag("--scalar", args->scalar, "Run the scalar twins of the SIMD kernels");
   cmd->add_option("--frames", args->frames,
                   "Time N warm frames (technique prepared once) and print min / median / max "
                   "and each pass's median; outputs are the last frame's")
-      ->check(CLI::Range(1, 100000));
+      ->check(wholeNumberIn(1, 100000));
   cmd->add_option("--warmup", args->warmup, "Untimed frames before --frames")
-      ->check(CLI::Range(0, 1000))
+      ->check(wholeNumberIn(0, 1000))
       ->capture_default_str();
   cmd->add_option("--visibility", args->visibility_exr,
                   "Visibility EXR of light 0 (light i > 0: name.i.exr)");

@@ -13,6 +13,17 @@ View View::lookAt(int width, int height, vec3 eye, vec3 target, vec3 up, float f
                  "image size {}x{} is larger than the supported 8192x8192", width, height);
   PENUMBRA_CHECK(isFinite(eye) && isFinite(target) && isFinite(up),
                  "camera position, target and up must be finite numbers");
+  // Farther out, squared lengths overflow float: the view direction would come out as zero
+  // and the camera be called parallel to its up vector.
+  constexpr float kMaxCoordinate = 1e18f;
+  auto within = [&](const vec3& v) {
+    return std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
+           std::abs(v.z) <= kMaxCoordinate;
+  };
+  PENUMBRA_CHECK(within(eye) && within(target),
+                 "camera position ({}, {}, {}) and target ({}, {}, {}) must lie within {:g} of "
+                 "the origin in every coordinate",
+                 eye.x, eye.y, eye.z, target.x, target.y, target.z, kMaxCoordinate);
   PENUMBRA_CHECK(glm::length(target - eye) > 0.0f, "camera target equals its position");
   PENUMBRA_CHECK(glm::length(glm::cross(glm::normalize(target - eye), up)) > 1e-6f,
                  "camera up vector is parallel to the view direction");

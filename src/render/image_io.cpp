@@ -8,11 +8,14 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <system_error>
 #include <vector>
 
 #include "core/error.h"
+#include "render/output_file.h"
 
 namespace penumbra {
 namespace fs = std::filesystem;
@@ -73,17 +76,37 @@ void checkReadable(const std::string& path) {
 // `format`: PNG_FORMAT_GRAY or PNG_FORMAT_RGB, 8 bits per channel.
 void writePng8(const std::string& path, int width, int height, uint32_t format,
                const uint8_t* bytes) {
-  createParentDirectories(path);
   png_image image;
   std::memset(&image, 0, sizeof(image));
   image.version = PNG_IMAGE_VERSION;
   image.width = png_uint_32(width);
   image.height = png_uint_32(height);
   image.format = format;
-  const int ok = png_image_write_to_file(&image, path.c_str(), 0, bytes, 0, nullptr);
+  // Encoded in memory first (a call without a buffer measures it), then written whole by
+  // writeFileAtomically: libpng's own file writer leaves a truncated file on a full disk.
+  png_alloc_size_t size = 0;
+  int ok = png_image_write_to_memory(&image, nullptr, &size, 0, bytes, 0, nullptr);
+  std::vector<uint8_t> encoded(ok ? size : 0);
+  if (ok) ok = png_image_write_to_memory(&image, encoded.data(), &size, 0, bytes, 0, nullptr);
   const std::string message = image.message;
   png_image_free(&image);
   PENUMBRA_CHECK(ok != 0, "cannot write PNG '{}': {}", path, message);
+  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), size),
+                      "PNG");
+}
+
+// Larger images are refused before their pixels are allocated: a 74-byte PNG can claim
+// 100000x100000 pixels. The renderer's largest image is 8192x8192.
+constexpr uint64_t kMaxReadPixels = uint64_t(8192) * 8192;
+
+void checkReadSize(const std::string& path, const char* kind, uint64_t width, uint64_t height) {
+  PENUMBRA_CHECK(width > 0 && height > 0, "cannot read {} '{}': its size is {}x{}", kind, path,
+                 width, height);
+  PENUMBRA_CHECK(width <= kMaxReadPixels && height <= kMaxReadPixels &&
+                     width * height <= kMaxReadPixels,
+                 "cannot read {} '{}': {}x{} pixels is more than the limit of {} pixels "
+                 "(8192x8192)",
+                 kind, path, width, height, kMaxReadPixels);
 }
 
 // Reads a PNG into 8-bit `format` (PNG_FORMAT_GRAY or PNG_FORMAT_RGB). libpng's simplified
@@ -98,6 +121,11 @@ std::vector<uint8_t> readPng8(const std::string& path, uint32_t format, int& wid
     const std::string message = image.message;
     png_image_free(&image);
     throw Error(fmt::format("cannot read PNG '{}': {}", path, message));
+  }
+  if (image.width == 0 || image.height == 0 ||
+      uint64_t(image.width) * image.height > kMaxReadPixels) {
+    png_image_free(&image);
+    checkReadSize(path, "PNG", image.width, image.height);
   }
   image.format = format;
   std::vector<uint8_t> bytes(PNG_IMAGE_SIZE(image));
@@ -217,7 +245,6 @@ bool isGrayPng(const std::string& path) {
 
 void writeExr(const std::string& path, const Image<float>& values) {
   checkWritable(path, values.width(), values.height());
-  createParentDirectories(path);
   EXRHeader header;
   InitEXRHeader(&header);
   EXRImage image;
@@ -241,11 +268,16 @@ void writeExr(const std::string& path, const Image<float>& values) {
   image.height = values.height();
   image.images = reinterpret_cast<unsigned char**>(const_cast<float**>(&plane));
 
+  // Encoded in memory, then written whole: tinyexr's file writer does not check its writes
+  // (a full disk gave 0-byte files and exit code 0).
   const char* err = nullptr;
-  const int ret = SaveEXRImageToFile(&image, &header, path.c_str(), &err);
-  if (ret != TINYEXR_SUCCESS) {
+  unsigned char* encoded = nullptr;
+  const size_t size = SaveEXRImageToMemory(&image, &header, &encoded, &err);
+  if (size == 0 || encoded == nullptr) {
     throw Error(fmt::format("cannot write EXR '{}': {}", path, takeExrError(err)));
   }
+  const std::unique_ptr<unsigned char, decltype(&std::free)> owned(encoded, &std::free);
+  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded), size), "EXR");
 }
 
 Image<float> readExr(const std::string& path) {
@@ -263,6 +295,9 @@ Image<float> readExr(const std::string& path) {
     throw Error(fmt::format("cannot read EXR '{}': {}", path, takeExrError(err)));
   }
   h.parsed = true;
+  const EXRBox2i& window = h.header.data_window;
+  checkReadSize(path, "EXR", uint64_t(int64_t(window.max_x) - window.min_x + 1),
+                uint64_t(int64_t(window.max_y) - window.min_y + 1));
   PENUMBRA_CHECK(!h.header.tiled, "EXR '{}' is tiled; only scanline files are read", path);
   PENUMBRA_CHECK(h.header.num_channels > 0, "EXR '{}' has no channels", path);
   for (int c = 0; c < h.header.num_channels; ++c) {

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "render/image_io.h"
+#include "render/output_file.h"
 #include "scene/mesh_report.h"
 
 namespace penumbra {
@@ -146,13 +147,7 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
 void writeStatsJson(const std::string& path, const Scene& scene, const FrameOptions& options,
                     const FrameResult& result) {
   PENUMBRA_CHECK(!path.empty(), "stats output path is empty");
-  createParentDirectories(path);
-  const std::string text = frameStatsJson(scene, options, result);
-  std::ofstream out(path, std::ios::binary);
-  PENUMBRA_CHECK(out.good(), "cannot open stats file '{}' for writing", path);
-  out << text;
-  out.close();
-  PENUMBRA_CHECK(!out.fail(), "cannot write stats file '{}'", path);
+  writeFileAtomically(path, frameStatsJson(scene, options, result), "stats file");
 }
 
 std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,

@@ -1,5 +1,6 @@
 #include "scene/generators.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -26,9 +27,17 @@ Mesh makeBox(vec3 min, vec3 max) {
   return mesh;
 }
 
+void checkGeneratedTriangles(const char* generator, const char* what, int64_t triangles) {
+  PENUMBRA_CHECK(triangles <= kMaxGeneratedTriangles,
+                 "{}: {} make {} triangles (the limit is {})", generator, what, triangles,
+                 kMaxGeneratedTriangles);
+}
+
 Mesh makeSphere(vec3 center, float radius, int segments, int rings) {
   PENUMBRA_CHECK(radius > 0.0f && std::isfinite(radius), "sphere: radius {} must be > 0", radius);
   PENUMBRA_CHECK(rings >= 2, "sphere: {} rings is fewer than 2", rings);
+  checkGeneratedTriangles("sphere", fmt::format("{} segments x {} rings", segments, rings).c_str(),
+                          2 * int64_t(std::max(segments, 0)) * rings);
   // Profile from the south pole to the north pole; the poles have radius exactly 0 so the lathe
   // makes them single vertices and the sphere is closed.
   std::vector<vec2> profile;
@@ -73,6 +82,7 @@ Mesh makeGroundPlane(vec3 center, float half_size) {
 Mesh makeDisk(vec3 center, vec3 normal, float radius, int segments) {
   PENUMBRA_CHECK(radius > 0.0f && std::isfinite(radius), "disk: radius {} must be > 0", radius);
   PENUMBRA_CHECK(segments >= 3, "disk: {} segments is fewer than 3", segments);
+  checkGeneratedTriangles("disk", fmt::format("{} segments", segments).c_str(), segments);
   PENUMBRA_CHECK(isFinite(normal) && glm::length(normal) > 0.0f, "disk: the normal is zero");
   const vec3 n = glm::normalize(normal);
   const vec3 axis = std::abs(n.x) < 0.6f ? vec3(1, 0, 0) : vec3(0, 1, 0);

@@ -9,6 +9,14 @@
 
 namespace penumbra {
 
+// Generated meshes larger than this are refused before anything is allocated: a scene file
+// asking for 2e9 segments would otherwise run for seconds and end in std::bad_alloc. At the
+// limit a mesh takes about 250 MB (positions, indices, three normals per triangle); the
+// largest built-in (fractal level 10) has 2^21 triangles.
+constexpr int64_t kMaxGeneratedTriangles = int64_t(1) << 22;
+// Throws penumbra::Error "<generator>: <what> make <triangles> triangles (the limit is ...)".
+void checkGeneratedTriangles(const char* generator, const char* what, int64_t triangles);
+
 Mesh makeBox(vec3 min, vec3 max);
 // UV sphere: `segments` around the vertical axis, `rings` latitude bands; the poles are single
 // vertices, so the sphere is a closed manifold. Normals are the exact sphere normals.

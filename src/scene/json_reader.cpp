@@ -88,7 +88,12 @@ int JsonReader::integer(const Json& value, const std::string& path) const {
 
 std::string JsonReader::string(const Json& value, const std::string& path) const {
   if (!value.is_string()) fail(path, "expected a string");
-  return value.get<std::string>();
+  std::string text = value.get<std::string>();
+  // A NUL would cut every message (and path) that quotes the string at that character.
+  if (text.find('\0') != std::string::npos) {
+    fail(path, "the string contains a NUL character (\\u0000)");
+  }
+  return text;
 }
 
 vec3 JsonReader::vector3(const Json& value, const std::string& path) const {

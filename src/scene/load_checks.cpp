@@ -10,7 +10,6 @@ namespace penumbra {
 
 void checkPlyDeclaration(const std::string& path, const PlyHeader& ply) {
   if (!ply.is_ply) return;
-  uint64_t declared_lines = 0;
   for (const PlyElement& element : ply.elements) {
     // igea.ply of common-3d-test-models: assimp returns a single triangle for the strips.
     if (element.name == "tristrips" && element.count > 0) {
@@ -20,21 +19,6 @@ void checkPlyDeclaration(const std::string& path, const PlyHeader& ply) {
           "first",
           path, element.count));
     }
-    declared_lines += element.count;
-  }
-  if (ply.ascii && ply.ascii_body_lines < declared_lines) {
-    throw Error(fmt::format(
-        "{}: the PLY header declares {} elements ({}) but the ASCII body holds {} lines: the "
-        "file is cut short or its header is wrong",
-        path, declared_lines,
-        [&] {
-          std::string list;
-          for (const PlyElement& e : ply.elements) {
-            list += fmt::format("{}{} {}", list.empty() ? "" : ", ", e.count, e.name);
-          }
-          return list;
-        }(),
-        ply.ascii_body_lines));
   }
 }
 

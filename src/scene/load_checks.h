@@ -10,9 +10,8 @@
 
 namespace penumbra {
 
-// Before loading: throws penumbra::Error naming the file for a PLY of triangle strips (assimp
-// 5.2 reads them as one triangle) and for an ASCII PLY whose body holds fewer lines than its
-// header declares elements (assimp fills the missing faces with whatever it finds).
+// Throws penumbra::Error naming the file for a PLY of triangle strips (assimp 5.2 reads them as
+// one triangle). A body that does not match its header never gets this far (ply_check.h).
 void checkPlyDeclaration(const std::string& path, const PlyHeader& ply);
 
 // Distinct vertices the triangles use (indices out of range are not counted: weld.h refuses

@@ -8,6 +8,7 @@
 #include <assimp/scene.h>
 
 #include "core/error.h"
+#include "scene/assimp_read.h"
 #include "scene/load_checks.h"
 #include "scene/normals.h"
 #include "scene/weld.h"
@@ -74,14 +75,14 @@ Mesh loadMesh(const std::string& path) {
   PENUMBRA_CHECK(std::filesystem::exists(path, ec), "{}: mesh file not found", path);
   PENUMBRA_CHECK(std::filesystem::is_regular_file(path, ec), "{}: not a regular file", path);
 
-  const PlyHeader ply = readPlyHeader(path);
-  checkPlyDeclaration(path, ply);
-
   Assimp::Importer importer;
   // No JoinIdenticalVertices: welding is ours (weld.h), exact on positions only, so seams that
-  // split normals or texture coordinates still share their edges.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
-  PENUMBRA_CHECK(scene != nullptr, "{}: cannot read mesh: {}", path, importer.GetErrorString());
+  // split normals or texture coordinates still share their edges. The file's bytes are checked
+  // against their own header before assimp reads them (assimp_read.h); what is well formed but
+  // not read right (triangle strips) is refused next, against the declaration.
+  const aiScene* scene = &readTriangulatedScene(importer, path);
+  const PlyHeader ply = readPlyHeader(path);
+  checkPlyDeclaration(path, ply);
   PENUMBRA_CHECK(scene->mRootNode != nullptr, "{}: the file holds no scene graph", path);
 
   Gathered gathered;

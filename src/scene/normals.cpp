@@ -1,5 +1,6 @@
 #include "scene/normals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -11,6 +12,22 @@ namespace {
 // valence) gives way to the simpler rule: the vertex average where the face is within the
 // crease angle of it, else the face normal. Only fans with hundreds of triangles hit it.
 constexpr uint32_t kMaxGroupedValence = 256;
+
+// v / |v|, or zero for a zero v. A v whose squared length leaves float's range (the cross
+// products of a mesh 1e-13 units across are 1e-26, their squares underflow) is normalised in
+// double instead of being taken for zero.
+vec3 unitOrZero(const vec3& v) {
+  const float length = glm::length(v);
+  if (length > 0.0f && std::isfinite(length)) return v / length;
+  const glm::dvec3 wide(v);
+  const double wide_length = glm::length(wide);
+  return wide_length > 0.0 && std::isfinite(wide_length) ? vec3(wide / wide_length) : vec3(0.0f);
+}
+
+// Below this edge length a triangle's float cross product can underflow to zero although the
+// triangle is not degenerate; edges over about 1e19 make it overflow. Either way its normal is
+// then taken in double.
+constexpr float kTinyEdge = 1e-9f;
 
 }  // namespace
 
@@ -25,8 +42,13 @@ void computeCornerNormals(Mesh& mesh, float crease_degrees) {
   for (size_t t = 0; t < triangle_count; ++t) {
     const vec3 a = mesh.vertex(t, 0), b = mesh.vertex(t, 1), c = mesh.vertex(t, 2);
     weighted[t] = glm::cross(b - a, c - a);
-    const float length = glm::length(weighted[t]);
-    if (length > 0.0f && std::isfinite(length)) unit[t] = weighted[t] / length;
+    unit[t] = unitOrZero(weighted[t]);
+    const vec3 reach = glm::max(glm::abs(b - a), glm::abs(c - a));
+    if (unit[t] == vec3(0.0f) &&
+        (std::max({reach.x, reach.y, reach.z}) < kTinyEdge || !isFinite(weighted[t]))) {
+      const glm::dvec3 wide = glm::cross(glm::dvec3(b - a), glm::dvec3(c - a));
+      unit[t] = unitOrZero(vec3(glm::normalize(wide)));
+    }
   }
 
   // Triangles around each vertex (CSR).
@@ -43,8 +65,7 @@ void computeCornerNormals(Mesh& mesh, float crease_degrees) {
   for (size_t v = 0; v < vertex_count; ++v) {
     vec3 sum(0.0f);
     for (uint32_t i = start[v]; i < start[v + 1]; ++i) sum += weighted[around[i]];
-    const float length = glm::length(sum);
-    if (length > 0.0f && std::isfinite(length)) vertex_average[v] = sum / length;
+    vertex_average[v] = unitOrZero(sum);
   }
 
   mesh.corner_normals.assign(mesh.indices.size(), vec3(0.0f, 1.0f, 0.0f));
@@ -69,8 +90,8 @@ void computeCornerNormals(Mesh& mesh, float crease_degrees) {
         const uint32_t f = around[i];
         if (glm::dot(unit[f], face) >= cos_crease) sum += weighted[f];
       }
-      const float length = glm::length(sum);
-      out = length > 0.0f && std::isfinite(length) ? sum / length : face;
+      const vec3 smooth = unitOrZero(sum);
+      out = smooth != vec3(0.0f) ? smooth : face;
     }
   }
 }

@@ -23,7 +23,6 @@ PlyHeader readPlyHeader(const std::string& path) {
       header.is_ply = true;
       break;
     }
-    if (keyword == "format") header.ascii = first == "ascii";
     if (keyword != "element") continue;
     PlyElement element;
     element.name = first;
@@ -33,11 +32,6 @@ PlyHeader readPlyHeader(const std::string& path) {
     header.elements.push_back(element);
   }
   if (!header.is_ply) return {};
-  if (header.ascii) {
-    while (std::getline(in, line)) {
-      header.ascii_body_lines += line.find_first_not_of(" \t\r") != std::string::npos;
-    }
-  }
   return header;
 }
 

@@ -14,15 +14,12 @@ struct PlyElement {
 
 struct PlyHeader {
   bool is_ply = false;  // starts with "ply" and has a readable header up to "end_header"
-  bool ascii = false;   // "format ascii"
   std::vector<PlyElement> elements;  // in header order
-  // Non-blank lines after end_header in an ASCII file: one per element instance when the file
-  // is what its header says.
-  uint64_t ascii_body_lines = 0;
 };
 
-// Reads the header (and, for ASCII files, counts the body's lines). is_ply is false when the
-// file does not start with "ply" or its header cannot be read as one; assimp then reports it.
+// Reads the header. is_ply is false when the file does not start with "ply" or its header
+// cannot be read as one. (The body is held against the header before assimp reads it:
+// ply_check.h.)
 PlyHeader readPlyHeader(const std::string& path);
 
 }  // namespace penumbra

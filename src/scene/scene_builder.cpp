@@ -40,6 +40,15 @@ Camera frameBounds(const Bounds3& bounds, vec3 from, int width, int height, floa
   // Reversed-Z keeps precision at any distance, so the near plane only has to stay in front of
   // everything in view.
   camera.near_plane = std::max(1e-4f, 0.01f * (distance - radius));
+  // Bounds near float's limit put the camera at infinity (or past View's 1e18 limit): say
+  // that the scene is too large, not that the camera is not finite.
+  const float reach = std::max({std::abs(camera.position.x), std::abs(camera.position.y),
+                                std::abs(camera.position.z)});
+  PENUMBRA_CHECK(std::isfinite(distance) && reach <= 1e18f,
+                 "cannot place a camera around the scene: its bounds ({}, {}, {}) to ({}, {}, {}) "
+                 "put it {:g} units from the origin (the limit is 1e18)",
+                 bounds.min.x, bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y,
+                 bounds.max.z, reach);
   return camera;
 }
 

@@ -183,8 +183,12 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
     readCamera(reader, *camera, scene.camera);
   } else if (scene.triangleCount() > 0) {
     // No camera: look at everything from the front, a little to the right and above.
-    scene.camera = frameBounds(scene.bounds(), vec3(0.5f, 0.45f, 1.0f), scene.settings.width,
-                               scene.settings.height);
+    try {
+      scene.camera = frameBounds(scene.bounds(), vec3(0.5f, 0.45f, 1.0f), scene.settings.width,
+                                 scene.settings.height);
+    } catch (const Error& e) {
+      reader.fail("camera", fmt::format("not given, and {}", e.what()));
+    }
   }
   try {
     scene.finalize();

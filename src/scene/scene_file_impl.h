@@ -16,4 +16,8 @@ void readMeshEntry(const JsonReader& reader, const Json& entry, const std::strin
 // base_dir, absolute paths as they are.
 std::string resolveMeshPath(const std::string& file, const std::string& base_dir);
 
+// False for "models:NAME" values whose NAME is absolute or climbs out with '..'; true for
+// names inside the models folder and for values without the prefix.
+bool isInsideModelsFolder(const std::string& file);
+
 }  // namespace penumbra

@@ -159,6 +159,11 @@ Mesh readFileMesh(const JsonReader& reader, const Json& entry, const std::string
   reader.expectObject(entry, path, keys);
   const std::string file_path = JsonReader::child(path, "file");
   const std::string file = reader.string(entry["file"], file_path);
+  if (file.starts_with(kModelsPrefix) && !isInsideModelsFolder(file)) {
+    reader.fail(file_path, fmt::format("{} is not a name inside the models folder (no '..', no "
+                                       "absolute path)",
+                                       file));
+  }
   const std::string resolved = resolveMeshPath(file, base_dir);
   std::error_code ec;
   if (file.starts_with(kModelsPrefix) && !fs::exists(resolved, ec)) {
@@ -214,6 +219,16 @@ Mesh readGeneratorMesh(const JsonReader& reader, const Json& entry, const std::s
 
 }  // namespace
 
+bool isInsideModelsFolder(const std::string& file) {
+  if (!file.starts_with(kModelsPrefix)) return true;
+  const fs::path name = fs::path(file.substr(kModelsPrefix.size())).lexically_normal();
+  if (name.empty() || name.is_absolute() || name.has_root_name()) return false;
+  for (const fs::path& part : name) {
+    if (part == "..") return false;
+  }
+  return true;
+}
+
 std::string resolveMeshPath(const std::string& file, const std::string& base_dir) {
   if (file.starts_with(kModelsPrefix)) {
     return (fs::path(modelsDirectory()) / file.substr(kModelsPrefix.size())).string();
@@ -235,15 +250,26 @@ void readMeshEntry(const JsonReader& reader, const Json& entry, const std::strin
                        : readGeneratorMesh(reader, entry, path);
 
   mat4 transform(1.0f);
-  if (const Json* fit = JsonReader::find(entry, "fit")) {
+  const Json* fit = JsonReader::find(entry, "fit");
+  if (fit) {
     const float size = reader.number(*fit, JsonReader::child(path, "fit"));
     if (size <= 0.0f) reader.fail(JsonReader::child(path, "fit"), "must be > 0");
     transform = fitTransform(mesh, size);
   }
-  if (const Json* t = JsonReader::find(entry, "transform")) {
+  const Json* t = JsonReader::find(entry, "transform");
+  if (t) {
     transform = readTransform(reader, *t, JsonReader::child(path, "transform")) * transform;
   }
-  if (transform != mat4(1.0f)) transformMesh(mesh, transform);
+  if (transform != mat4(1.0f)) {
+    try {
+      transformMesh(mesh, transform);
+    } catch (const Error& e) {
+      // Name the key that asked for the transform (a scale that overflows float, a fit of a
+      // mesh with no extent).
+      reader.fail(JsonReader::child(path, t ? "transform" : "fit"),
+                  fit && t ? fmt::format("{} (with \"fit\")", e.what()) : std::string(e.what()));
+    }
+  }
   if (const Json* name = JsonReader::find(entry, "name")) {
     mesh.name = reader.string(*name, JsonReader::child(path, "name"));
   }

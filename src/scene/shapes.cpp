@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "scene/generators.h"
 #include "scene/mesh_ops.h"
 
 namespace penumbra {
@@ -27,6 +28,8 @@ vec3 anyPerpendicular(const vec3& t) {
 Mesh makeLathe(vec3 base, const std::vector<vec2>& profile, int segments, float crease_degrees) {
   PENUMBRA_CHECK(profile.size() >= 2, "lathe: the profile needs at least 2 points");
   PENUMBRA_CHECK(segments >= 3, "lathe: {} segments is fewer than 3", segments);
+  checkGeneratedTriangles("lathe", fmt::format("{} segments", segments).c_str(),
+                          2 * int64_t(profile.size()) * segments);
   Mesh mesh;
   mesh.name = "lathe";
   // first[i]: index of ring i's first vertex; a pole ring has one vertex used for every j.
@@ -64,6 +67,8 @@ Mesh makeTube(const std::vector<vec3>& path, const std::vector<float>& radii, in
   PENUMBRA_CHECK(path.size() >= 2 && radii.size() == path.size(),
                  "tube: needs at least 2 path points and one radius per point");
   PENUMBRA_CHECK(sides >= 3, "tube: {} sides is fewer than 3", sides);
+  checkGeneratedTriangles("tube", fmt::format("{} sides", sides).c_str(),
+                          2 * int64_t(path.size()) * sides);
   const size_t n = path.size();
   std::vector<vec3> tangent(n);
   for (size_t k = 0; k < n; ++k) {
@@ -110,6 +115,9 @@ Mesh makeTorus(vec3 center, float major_radius, float minor_radius, int segments
   PENUMBRA_CHECK(major_radius > minor_radius && minor_radius > 0.0f,
                  "torus: need major radius {} > minor radius {} > 0", major_radius, minor_radius);
   PENUMBRA_CHECK(segments >= 3, "torus: {} segments is fewer than 3", segments);
+  PENUMBRA_CHECK(sides >= 3, "torus: {} sides is fewer than 3", sides);
+  checkGeneratedTriangles("torus", fmt::format("{} segments x {} sides", segments, sides).c_str(),
+                          2 * int64_t(segments) * sides);
   std::vector<vec3> path;
   for (int j = 0; j < segments; ++j) {
     const vec2 c = unitCircle(j, segments) * major_radius;
