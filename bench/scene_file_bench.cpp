@@ -2,8 +2,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,9 +9,9 @@
 #include <fmt/format.h>
 
 #include "bench_scenes.h"
-#include "core/parallel.h"
 #include "render/frame.h"
 #include "shadows/technique.h"
+#include "timed_frames.h"
 
 namespace penumbra {
 namespace {
@@ -27,26 +25,8 @@ void sceneFrame(benchmark::State& state, const std::string& scene_name,
   options.technique = TechniqueConfig(technique);
   const FrameRenderer renderer(scene, options);
   FrameResult frame;
-  double seconds = 0.0;
-  std::vector<std::pair<std::string, double>> passes;
-  for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    renderer.render(frame);
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    benchmark::DoNotOptimize(frame.color.data());
-    for (const auto& [name, ms] : frame.total.time_ms) {
-      auto it = std::find_if(passes.begin(), passes.end(), [&](const auto& p) { return p.first == name; });
-      if (it == passes.end()) passes.emplace_back(name, ms);
-      else it->second += ms;
-    }
-  }
-  if (seconds <= 0.0) return;
-  const double n = double(state.iterations());
-  state.counters["fps"] = n / seconds;
-  state.counters["frame_ms"] = 1e3 * seconds / n;
-  for (const auto& [name, ms] : passes) state.counters[name + "_ms"] = ms / n;
+  if (!timeWarmFrames(state, renderer, frame)) return;
   state.counters["scene_triangles"] = double(scene.triangleCount());
-  state.counters["threads"] = double(workerCount());
   state.SetLabel(fmt::format("{} {}x{} {} tris, {}", scene_name, frame.view.width,
                              frame.view.height, scene.triangleCount(), technique));
 }

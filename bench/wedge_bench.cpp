@@ -16,17 +16,15 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
-#include <chrono>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "bench_scenes.h"
-#include "core/parallel.h"
 #include "render/frame.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
 #include "shadows/wedge/wedge_technique.h"
+#include "timed_frames.h"
 
 namespace penumbra {
 namespace {
@@ -41,27 +39,8 @@ void softShadowFrame(benchmark::State& state, const std::string& scene_name, int
   // Prepared once, as a viewer renders frame after frame (the oracle's BVH is per scene).
   const FrameRenderer renderer(scene, options);
   FrameResult frame;
-  std::map<std::string, double> pass_totals;
-  std::vector<std::string> pass_order;
-  double seconds = 0.0;
-  for (auto _ : state) {
-    // Timed by hand: fps is frames per wall-clock second (the library's rate counters divide by
-    // the main thread's CPU time).
-    const auto start = std::chrono::steady_clock::now();
-    renderer.render(frame);
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    benchmark::DoNotOptimize(frame.color.data());
-    for (const auto& [name, ms] : frame.total.time_ms) {
-      if (!pass_totals.count(name)) pass_order.push_back(name);
-      pass_totals[name] += ms;
-    }
-  }
-  if (seconds <= 0.0) return;
-  const double fps = double(state.iterations()) / seconds;
-  state.counters["fps"] = fps;
-  state.counters["frame_ms"] = 1e3 / fps;
-  for (const std::string& name : pass_order)
-    state.counters[name + "_ms"] = pass_totals[name] / double(state.iterations());
+  if (!timeWarmFrames(state, renderer, frame)) return;
+  const double fps = state.counters["fps"];
   const Stats& c = frame.total;
   state.counters["z_reads"] = double(c.z_reads);
   state.counters["stencil_writes"] = double(c.stencil_writes);
@@ -72,7 +51,6 @@ void softShadowFrame(benchmark::State& state, const std::string& scene_name, int
   state.counters["tiles_accepted"] = double(c.tiles_accepted);
   state.counters["wedges"] = double(c.wedges);
   if (c.rays > 0) state.counters["rays"] = double(c.rays);
-  state.counters["threads"] = double(workerCount());
   state.SetLabel(fmt::format("{} {}x{}, {}: {:.1f} fps", scene_name, width, height,
                              technique.describe(), fps));
 }

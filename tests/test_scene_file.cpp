@@ -11,6 +11,7 @@ namespace {
 
 using test::contains;
 using test::errorMessage;
+using test::ScopedEnv;
 using test::ScratchDir;
 
 const char* kValidScene = R"({
@@ -152,9 +153,7 @@ TEST(SceneFile, ErrorsNameTheFileAndKey) {
 TEST(SceneFile, ModelsPrefixUsesTheModelsDirectory) {
   ScratchDir dir;
   dir.write("tiny.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  const char* previous = std::getenv("PENUMBRA_MODELS");
-  const std::string saved = previous ? previous : "";
-  setenv("PENUMBRA_MODELS", dir.path().c_str(), 1);
+  const ScopedEnv models("PENUMBRA_MODELS", dir.path());
   const std::string text = R"({"lights": [{"center": [0, 5, 5]}], "meshes": [{"file": "models:tiny.obj"}]})";
   EXPECT_EQ(modelsDirectory(), dir.path());
   EXPECT_EQ(parseSceneJson(text, "m.json", "").meshes[0].triangleCount(), 1u);
@@ -164,11 +163,6 @@ TEST(SceneFile, ModelsPrefixUsesTheModelsDirectory) {
   });
   EXPECT_TRUE(contains(message, "m.json: meshes[0].file") && contains(message, "PENUMBRA_MODELS"))
       << message;
-  if (previous) {
-    setenv("PENUMBRA_MODELS", saved.c_str(), 1);
-  } else {
-    unsetenv("PENUMBRA_MODELS");
-  }
 }
 
 }  // namespace

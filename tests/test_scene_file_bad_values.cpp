@@ -17,6 +17,7 @@ namespace {
 
 using test::contains;
 using test::errorMessage;
+using test::ScopedEnv;
 using test::ScratchDir;
 
 const char* kLight = R"("lights": [{"center": [0, 5, 0], "radius": 0.2}])";
@@ -142,11 +143,6 @@ TEST(SceneFileBadValues, ModelsPrefixCannotLeaveTheModelsFolder) {
     });
     EXPECT_TRUE(contains(message, "escape.json: meshes[0].file: ")) << message;
     EXPECT_TRUE(contains(message, "is not a name inside the models folder")) << message;
-  }
-  if (previous) {
-    setenv("PENUMBRA_MODELS", saved.c_str(), 1);
-  } else {
-    unsetenv("PENUMBRA_MODELS");
   }
 }
 

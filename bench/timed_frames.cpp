@@ -1,0 +1,36 @@
+#include "timed_frames.h"
+
+#include <chrono>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/parallel.h"
+
+namespace penumbra {
+
+bool timeWarmFrames(benchmark::State& state, const FrameRenderer& renderer, FrameResult& frame) {
+  std::map<std::string, double> pass_totals;
+  std::vector<std::string> pass_order;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    renderer.render(frame);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(frame.color.data());
+    for (const auto& [name, ms] : frame.total.time_ms) {
+      if (!pass_totals.count(name)) pass_order.push_back(name);
+      pass_totals[name] += ms;
+    }
+  }
+  if (seconds <= 0.0) return false;
+  const double frames = double(state.iterations());
+  state.counters["fps"] = frames / seconds;
+  state.counters["frame_ms"] = 1e3 * seconds / frames;
+  for (const std::string& name : pass_order)
+    state.counters[name + "_ms"] = pass_totals[name] / frames;
+  state.counters["threads"] = double(workerCount());
+  return true;
+}
+
+}  // namespace penumbra
