@@ -1,5 +1,5 @@
 #pragma once
-// Casters exactly edge-on to the light centre, for penumbra wedges.
+// Casters edge-on to the light centre, for penumbra wedges.
 //
 // A triangle whose plane holds the light centre has no facing seen from there: its hard shadow
 // is empty, but a soft light shines across it from both sides, and the triangle blocks the half
@@ -12,29 +12,41 @@
 // (silhouette.h, SolidWithHoles), and the other facing is drawn into a light-intensity buffer
 // of its own, clamped on its own, and the two visibilities are combined by taking the darker
 // (wedge_technique.cpp). The darker, not the product: the sheet is usually part of a surface
-// that already shadows the same points, and the wedges cannot tell how the two overlap.
+// that already shadows the same points, and the wedges cannot tell how the two overlap. A
+// triangle whose plane misses the centre by a hair (kEdgeOnRelative) has a facing, which its
+// mesh may cast, but the light still shines across it from both sides almost equally: the
+// other facing's pass takes it too.
 #include <cstdint>
 
 #include "scene/edges.h"
+#include "scene/light.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "shadows/silhouette.h"
 
 namespace penumbra {
 
-// True when triangle (a, b, c) has an area and its plane holds `light` exactly (in double, as
-// findSilhouette decides facing).
-bool edgeOnToLight(const dvec3& a, const dvec3& b, const dvec3& c, const dvec3& light);
+// True when triangle (a, b, c) has an area and its plane passes within `tolerance` of `light`
+// (in double, as findSilhouette decides facing; tolerance 0: exactly through it).
+bool edgeOnToLight(const dvec3& a, const dvec3& b, const dvec3& c, const dvec3& light,
+                   double tolerance);
 
-// Whether any triangle of the scene is edge-on to `light`: the wedges' extra passes for the
-// edge-on casters' other facing run only then.
-bool anyEdgeOnToLight(const Scene& scene, const vec3& light);
+// How near the light centre a plane counts as edge-on for the other facing's pass, relative
+// to the light's radius: the light's two halves then differ by less than this fraction of the
+// radius, so the facing seen from the centre says nothing about which half shines across. A
+// caster meant to stand in the centre's plane lands off it by float rounding (a rotated
+// generator: some 1e-7 of the radius), and would otherwise get one line only.
+inline constexpr double kEdgeOnRelative = 1e-4;
 
-// The silhouette of the mesh's edge-on triangles cast with `facing` (+1 as wound, -1 flipped),
+// Whether any triangle of the scene is edge-on to the light (kEdgeOnRelative): the wedges'
+// extra passes for the other facing run only then.
+bool anyEdgeOnToLight(const Scene& scene, const Light& light);
+
+// The silhouette of the mesh's triangles edge-on to the light (kEdgeOnRelative) cast with `facing` (+1 as wound, -1 flipped),
 // leaving out those that `cast` (the mesh's own silhouette from the same centre) already casts
 // with that facing and the repeated triangles (adjacency.repeated); every other triangle casts
 // nothing. Empty edges when there is no such triangle.
-Silhouette edgeOnSheet(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light,
+Silhouette edgeOnSheet(const Mesh& mesh, const EdgeAdjacency& adjacency, const Light& light,
                        const Silhouette& cast, int8_t facing);
 
 }  // namespace penumbra

@@ -122,7 +122,7 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
       // An edge-on triangle (with an area) casts with the chosen facing for the wedges: it
       // blocks the half of a soft light beyond its plane (edge_on_sheet.h). Shadow volumes and
       // two-sided wedges leave it out: its hard volume is empty.
-      if (facing == 0 && once && cast_only != 0 && edgeOnToLight(a, b, c, l)) facing = cast_only;
+      if (facing == 0 && once && cast_only != 0 && edgeOnToLight(a, b, c, l, 0.0)) facing = cast_only;
       s.orientation[t] = (cast_only == 0 || facing == cast_only) ? facing : 0;
     }
   });

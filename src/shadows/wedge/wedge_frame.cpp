@@ -271,7 +271,7 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
   p.volume = casterVolume(scene, m, eye, light.center, view, options.volume_mode,
                           soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto, light.radius);
   if (options.edge_on_facing != 0)
-    p.volume.silhouette = edgeOnSheet(mesh, scene.adjacency[m], light.center, p.volume.silhouette,
+    p.volume.silhouette = edgeOnSheet(mesh, scene.adjacency[m], light, p.volume.silhouette,
                                       options.edge_on_facing);
   p.inside_light = edgeInsideLight(mesh, p.volume.silhouette, light);
   if (p.inside_light) return p;

@@ -361,7 +361,7 @@ class PenumbraWedges final : public PreparedTechnique {
     // facing in a buffer of its own, clamped on its own (edge_on_sheet.h says why); usually
     // none, and then no pass runs. A zero radius has no penumbra and keeps the hard image.
     std::vector<WedgeLi> sheets;
-    if (!hard && anyEdgeOnToLight(scene_, light.center)) {
+    if (!hard && anyEdgeOnToLight(scene_, light)) {
       PassTimer timer(result.stats, "edge-on sheets");
       for (const int8_t facing : {int8_t(1), int8_t(-1)}) {
         WedgeLi sheet =
