@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/parallel.h"
+#include "shadows/edge_on_sheet.h"
 
 namespace penumbra {
 namespace {
@@ -117,7 +118,11 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
     for (size_t t = chunk * 8192; t < end; ++t) {
       const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
       const double side = glm::dot(glm::cross(b - a, c - a), l - a);
-      const int8_t facing = side > 0 ? 1 : (side < 0 ? -1 : 0);
+      int8_t facing = side > 0 ? 1 : (side < 0 ? -1 : 0);
+      // An edge-on triangle (with an area) casts with the chosen facing for the wedges: it
+      // blocks the half of a soft light beyond its plane (edge_on_sheet.h). Shadow volumes and
+      // two-sided wedges leave it out: its hard volume is empty.
+      if (facing == 0 && once && cast_only != 0 && edgeOnToLight(a, b, c, l, 0.0)) facing = cast_only;
       s.orientation[t] = (cast_only == 0 || facing == cast_only) ? facing : 0;
     }
   });

@@ -13,6 +13,8 @@
 // - A closed mesh with the light inside: only the triangles facing away from it, flipped
 //   (light-facing ones would cast nothing and every outside point would wrongly be lit).
 // - SolidWithHoles, for penumbra wedges (below): an open mesh is taken as a solid with holes.
+// - SolidWithHoles also casts a triangle exactly edge-on to the light centre with the chosen
+//   facing; the other facing is drawn apart (edge_on_sheet.h).
 // Per undirected edge the signed uses of the casting triangles are summed (edges.h): shared
 // edges of two same-facing triangles cancel, an open edge sums to +-1, an edge of three
 // triangles to whatever keeps the volume closed. Doom 3 BFG pairs directed edges the same way.

@@ -7,6 +7,7 @@
 #include "core/pseudo_angle.h"
 #include "core/error.h"
 #include "shadows/caster_volume.h"
+#include "shadows/edge_on_sheet.h"
 #include "shadows/wedge/wedge_light_reach.h"
 
 namespace penumbra {
@@ -269,6 +270,9 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
   // near-plane test conservative (caster_volume.h).
   p.volume = casterVolume(scene, m, eye, light.center, view, options.volume_mode,
                           soft ? CasterPolicy::SolidWithHoles : CasterPolicy::Auto, light.radius);
+  if (options.edge_on_facing != 0)
+    p.volume.silhouette = edgeOnSheet(mesh, scene.adjacency[m], light, p.volume.silhouette,
+                                      options.edge_on_facing);
   p.inside_light = edgeInsideLight(mesh, p.volume.silhouette, light);
   if (p.inside_light) return p;
   p.ws = buildWedges(mesh, p.volume.silhouette, light);

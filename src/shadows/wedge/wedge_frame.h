@@ -54,6 +54,9 @@ struct WedgeFrame {
 struct WedgeFrameOptions {
   VolumeMode volume_mode = VolumeMode::Auto;  // ZPass for the 2002 algorithm
   bool smooth_falloff = false;
+  // 0: every mesh's own silhouette. +1 or -1: only the triangles edge-on to the light centre
+  // that the mesh does not already cast with this facing, cast with it (edge_on_sheet.h).
+  int8_t edge_on_facing = 0;
 };
 WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
                            const Light& light, const View& view, const EyeBuffers& eye);

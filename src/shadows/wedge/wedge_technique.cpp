@@ -31,6 +31,7 @@
 #include "raster/rasterizer.h"
 #include "raster/tile_copy.h"
 #include "raster/tile_offsets.h"
+#include "shadows/edge_on_sheet.h"
 #include "shadows/facing_away.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
@@ -292,7 +293,7 @@ std::string wedgeTechniqueName(WedgeAlgorithm algorithm) {
 
 WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene,
                       const Light& light, const View& view, const EyeBuffers& eye,
-                      const RenderContext& context) {
+                      const RenderContext& context, int8_t edge_on_facing) {
   WedgeLi result;
   Stats& stats = result.stats;
   const int full = kLiFull;
@@ -306,10 +307,12 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
     frame_options.volume_mode =
         algorithm == WedgeAlgorithm::Original2002 ? VolumeMode::ZPass : options.volume_mode;
     frame_options.smooth_falloff = options.smooth_falloff;
+    frame_options.edge_on_facing = edge_on_facing;
     frame = buildWedgeFrame(frame_options, scene, light, view, eye);
     stats.silhouette_edges += frame.silhouette_edges;
     stats.wedges += frame.wedges.size();
   }
+  if (edge_on_facing != 0 && frame.silhouette_edges == 0) return result;
   {
     PassTimer timer(stats, "setup");
     setup = setupTriangles(frame.triangles, view.width, view.height);
@@ -353,14 +356,30 @@ class PenumbraWedges final : public PreparedTechnique {
     WedgeLi wedges = renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context);
     TechniqueResult result;
     result.stats = std::move(wedges.stats);
+    const bool hard = !(light.radius > 0.0f);
+    // Casters edge-on to the light centre with the facing their meshes do not cast, each
+    // facing in a buffer of its own, clamped on its own (edge_on_sheet.h says why); usually
+    // none, and then no pass runs. A zero radius has no penumbra and keeps the hard image.
+    std::vector<WedgeLi> sheets;
+    if (!hard && anyEdgeOnToLight(scene_, light)) {
+      PassTimer timer(result.stats, "edge-on sheets");
+      for (const int8_t facing : {int8_t(1), int8_t(-1)}) {
+        WedgeLi sheet =
+            renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context, facing);
+        result.stats.addCounters(sheet.stats);
+        if (sheet.li.width() > 0) sheets.push_back(std::move(sheet));
+      }
+    }
     PassTimer timer(result.stats, "resolve");
     // As the hard shadow volume and the oracle: a point whose triangle faces away from the
     // whole light gets none of it, whatever the wedges near the terminator say (their
     // silhouette is the centre's for the whole light, 2002 paper, section 8). With a zero
     // radius this keeps the image the hard volume's exactly.
-    const bool hard = !(light.radius > 0.0f);
     resolveVisibility(scene_, light, view, eye, result.visibility, [&](int x, int y) {
-      return liVisibility(wedges.li.at(x, y), wedges.full, hard);
+      float v = liVisibility(wedges.li.at(x, y), wedges.full, hard);
+      for (const WedgeLi& sheet : sheets)
+        v = std::min(v, liVisibility(sheet.li.at(x, y), sheet.full, false));
+      return v;
     });
     return result;
   }
