@@ -49,14 +49,7 @@ Silhouette edgeOnSheet(const Mesh& mesh, const EdgeAdjacency& adjacency, const L
         s.orientation[t] = facing;
   });
   for (const uint32_t t : adjacency.repeated.triangles) s.orientation[t] = 0;
-  // Per undirected edge the signed uses summed, as findSilhouette does.
-  for (size_t i = 0; i < adjacency.edges.size(); ++i) {
-    const Edge& e = adjacency.edges[i];
-    int32_t m = 0;
-    for (uint32_t u = e.first_use; u < e.first_use + e.use_count; ++u)
-      m += adjacency.uses[u].sign * s.orientation[adjacency.uses[u].triangle];
-    if (m != 0) s.edges.push_back({e.v0, e.v1, m, uint32_t(i)});
-  }
+  s.edges = silhouetteEdges(adjacency, s.orientation);
   return s;
 }
 

@@ -122,20 +122,28 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
       // An edge-on triangle (with an area) casts with the chosen facing for the wedges: it
       // blocks the half of a soft light beyond its plane (edge_on_sheet.h). Shadow volumes and
       // two-sided wedges leave it out: its hard volume is empty.
-      if (facing == 0 && once && cast_only != 0 && edgeOnToLight(a, b, c, l, 0.0)) facing = cast_only;
+      if (facing == 0 && once && cast_only != 0 && edgeOnToLight(a, b, c, l, 0.0))
+        facing = cast_only;
       s.orientation[t] = (cast_only == 0 || facing == cast_only) ? facing : 0;
     }
   });
   if (skip != nullptr)
     for (const uint32_t t : adjacency.repeated.triangles) s.orientation[t] = 0;
+  s.edges = silhouetteEdges(adjacency, s.orientation);
+  return s;
+}
+
+std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency,
+                                            const std::vector<int8_t>& orientation) {
+  std::vector<SilhouetteEdge> edges;
   for (size_t i = 0; i < adjacency.edges.size(); ++i) {
     const Edge& e = adjacency.edges[i];
     int32_t m = 0;
     for (uint32_t u = e.first_use; u < e.first_use + e.use_count; ++u)
-      m += adjacency.uses[u].sign * s.orientation[adjacency.uses[u].triangle];
-    if (m != 0) s.edges.push_back({e.v0, e.v1, m, uint32_t(i)});
+      m += adjacency.uses[u].sign * orientation[adjacency.uses[u].triangle];
+    if (m != 0) edges.push_back({e.v0, e.v1, m, uint32_t(i)});
   }
-  return s;
+  return edges;
 }
 
 }  // namespace penumbra

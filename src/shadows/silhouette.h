@@ -63,6 +63,11 @@ enum class CasterPolicy {
 Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light,
                           CasterPolicy policy = CasterPolicy::Auto);
 
+// The silhouette edges of triangles cast with `orientation` (one entry per triangle, as
+// Silhouette::orientation): per undirected edge the signed uses summed, kept where non-zero.
+std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency,
+                                            const std::vector<int8_t>& orientation);
+
 // Generalized winding number of the mesh at `point` (Jacobson, Kavan and Sorkine-Hornung 2013):
 // the signed solid angle of its triangles seen from there over 4 pi, positive where a triangle
 // is seen from its back. 1 inside a closed outward-oriented mesh and 0 outside; for an open
