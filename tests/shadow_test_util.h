@@ -5,6 +5,7 @@
 
 #include "metrics/shadow_boundary.h"
 #include "render/eye_pass.h"
+#include "scene/generators.h"
 #include "scene/model_sources.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
@@ -12,6 +13,23 @@
 #include "shadows/technique.h"
 
 namespace penumbra::testing {
+
+// A ground plane with a unit sphere hovering over it at height 2, one light (a point light by
+// default): the small scene the eye-placement tests move around in.
+inline Scene sphereOverGround(vec3 eye, vec3 target, vec3 light, float light_radius = 0.0f) {
+  Scene s;
+  s.name = "sphere-over-ground";
+  s.materials.push_back(Material{});
+  s.meshes.push_back(makeGroundPlane(vec3(0), 20.0f));
+  s.meshes.push_back(makeSphere(vec3(0, 2, 0), 1.0f, 32, 16));
+  s.lights.push_back(Light{light, light_radius, vec3(1), 1.0f});
+  s.camera.position = eye;
+  s.camera.target = target;
+  s.camera.fov_y = 60.0f;
+  s.camera.near_plane = 0.05f;
+  s.finalize();
+  return s;
+}
 
 struct OracleComparison {
   BoundaryAgreement agreement;

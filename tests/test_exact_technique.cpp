@@ -383,22 +383,6 @@ TEST(ExactTechnique, OverlappingOccludersAreNotBlack) {
   expectIdenticalUpToTies("columns", kSamples, a);
 }
 
-// A sphere over a floor under a large light, as the volume tests' scene but soft.
-Scene sphereOverFloor(vec3 eye, vec3 target) {
-  Scene scene;
-  scene.name = "sphere-over-floor";
-  const uint32_t material = addMaterial(scene, "grey", vec3(0.7f));
-  addMesh(scene, makeGroundPlane(vec3(0.0f), 20.0f), material);
-  addMesh(scene, makeSphere(vec3(0.0f, 2.0f, 0.0f), 1.0f, 32, 16), material);
-  addLight(scene, vec3(0.0f, 12.0f, 0.0f), 2.0f);
-  scene.camera.position = eye;
-  scene.camera.target = target;
-  scene.camera.fov_y = 60.0f;
-  scene.camera.near_plane = 0.05f;
-  scene.finalize();
-  return scene;
-}
-
 // 4. The eye inside a shadow. The light (radius 2 at height 12) and the unit sphere at height 2
 // put the eye, at height 0.6, in the umbra, in the penumbra inside the hard shadow, and in the
 // penumbra outside it (checked below from the angles the sphere and the light subtend). In the
@@ -419,7 +403,8 @@ TEST(ExactTechnique, EyeInsideAShadow) {
              kPenumbraInHardShadow},
         Case{"eye in penumbra, outside", vec3(1.3f, 0.6f, 0.0f), vec3(-2.5f, 0.0f, -1.5f),
              kPenumbraOutside}}) {
-    const Frame f = makeFrame(sphereOverFloor(c.eye, c.target), 240, 160);
+    const Frame f = makeFrame(
+        testing::sphereOverGround(c.eye, c.target, vec3(0.0f, 12.0f, 0.0f), 2.0f), 240, 160);
     // Where the eye is: the angle between the directions to the sphere's and the light's
     // centres against their angular radii (the tessellated sphere is a little smaller than its
     // radius; every margin here is over 2 degrees).

@@ -16,6 +16,7 @@ namespace penumbra {
 namespace {
 
 using testing::compareHardWithOracle;
+using testing::sphereOverGround;
 
 // The bound: at most 0.01 % of covered pixels differ, all of them ties
 // (metrics/shadow_boundary.h). The real meshes of ../shared/models have many open edges and
@@ -41,23 +42,6 @@ void expectMatchesOracle(const testing::OracleComparison& c, const std::string& 
 
 TechniqueConfig volumeOptions(VolumeMode mode = VolumeMode::Auto) {
   return TechniqueConfig("volume", VolumeOptions{mode});
-}
-
-// A ground plane with a sphere hovering over it: the small scene the eye-placement tests move
-// around in.
-Scene sphereOverGround(vec3 eye, vec3 target, vec3 light) {
-  Scene s;
-  s.name = "sphere-over-ground";
-  s.materials.push_back(Material{});
-  s.meshes.push_back(makeGroundPlane(vec3(0), 20.0f));
-  s.meshes.push_back(makeSphere(vec3(0, 2, 0), 1.0f, 32, 16));
-  s.lights.push_back(Light{light, 0.0f, vec3(1), 1.0f});
-  s.camera.position = eye;
-  s.camera.target = target;
-  s.camera.fov_y = 60.0f;
-  s.camera.near_plane = 0.05f;
-  s.finalize();
-  return s;
 }
 
 TEST(ShadowVolumeOracle, BuiltinScenes) {

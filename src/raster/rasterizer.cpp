@@ -142,11 +142,8 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
     StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};
     target.x0 = box.x0;
     target.y0 = box.y0;
+    // The primitive ids, copied the first time a polygon with owners reaches the tile.
     std::optional<TileCopy<uint32_t>> tile_primitive;
-    if (options.primitive) {
-      tile_primitive.emplace(*options.primitive, box);
-      target.primitive = tile_primitive->data();
-    }
     // Two-level stencil: a polygon that covers a whole culling tile and passes the depth rule
     // at all of its pixels adds its contribution to the tile's coarse cell instead.
     TileOffsets coarse(options.cull_level);
@@ -162,6 +159,10 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
       const StencilOwners owners = options.primitive
                                        ? StencilOwners{t.owners[0], t.owners[1]}
                                        : StencilOwners{};
+      if (owners.any() && !tile_primitive) {
+        tile_primitive.emplace(*options.primitive, box);
+        target.primitive = tile_primitive->data();
+      }
       forEachCullRect(
           t, e, depth, options.cull_level,
           [&](const TileEdges& sub, float zmin, float zmax) {
