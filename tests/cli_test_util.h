@@ -45,10 +45,11 @@ class CliTest : public ::testing::Test {
     if (!dir_.empty()) std::filesystem::remove_all(dir_);
   }
 
-  CliRun run(const std::string& args) const {
+  // `env`: assignments put before the command, e.g. "PENUMBRA_SIMD=off".
+  CliRun run(const std::string& args, const std::string& env = "") const {
     const std::filesystem::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = fmt::format("cd '{}' && '{}' {} >'{}' 2>'{}'", dir_.string(),
-                                            cli_, args, out.string(), err.string());
+    const std::string command = fmt::format("cd '{}' && {} '{}' {} >'{}' 2>'{}'", dir_.string(),
+                                            env, cli_, args, out.string(), err.string());
     const int status = std::system(command.c_str());
     CliRun r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -15,6 +15,7 @@
 #include "core/parallel.h"
 #include "eye_frame_util.h"
 #include "metrics/shadow_boundary.h"
+#include "oracle_cache.h"
 #include "scene/builtin_scenes.h"
 #include "scene/generators.h"
 #include "scene/scene_builder.h"
@@ -80,16 +81,29 @@ LightsResult renderAll(const TechniqueConfig& config, const Frame& f,
 }
 
 // The oracle's visibility for a built-in scene, rendered once per scene and kind: 1024 rays
-// over the light for soft techniques, one ray to the centre for hard ones.
+// over the light for soft techniques, one ray to the centre for hard ones. Only the visibility
+// is kept (the suite compares nothing else with it), on disk too (oracle_cache.h): every
+// technique's test process would otherwise trace the same oracle again.
 const LightsResult& oracle(const std::string& scene, const Frame& f, bool soft) {
   static std::map<std::string, LightsResult> cache;
-  const std::string key = scene + (soft ? "/soft" : "/hard");
+  const std::string key = scene + (soft ? "-soft" : "-hard");
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
-  TechniqueConfig config("reference");
-  config.options<ReferenceOptions>().rays = 1024;
-  config.options<ReferenceOptions>().hard = !soft;
-  return cache.emplace(key, renderAll(config, f)).first->second;
+  const std::string disk_key = fmt::format("conformance-{}-{}x{}", key, f.view.width, f.view.height);
+  LightsResult r;
+  if (auto images = testing::loadOracleImages(disk_key, f.scene.lights.size(), f.view.width,
+                                              f.view.height)) {
+    for (Image<float>& image : *images) r.lights.push_back({std::move(image), {}});
+  } else {
+    TechniqueConfig config("reference");
+    config.options<ReferenceOptions>().rays = 1024;
+    config.options<ReferenceOptions>().hard = !soft;
+    r = renderAll(config, f);
+    std::vector<const Image<float>*> stored;
+    for (const TechniqueResult& light : r.lights) stored.push_back(&light.visibility);
+    testing::storeOracleImages(disk_key, stored);
+  }
+  return cache.emplace(key, std::move(r)).first->second;
 }
 
 const Frame& builtinFrame(const std::string& name) {

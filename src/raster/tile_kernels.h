@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/simd_dispatch.h"
 #include "raster/triangle_setup.h"
 
 namespace penumbra {
@@ -197,9 +198,5 @@ void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rul
                          const StencilTarget& target, KernelCounts& counts,
                          StencilOwners owners = {});
 
-// True when the SIMD kernels are compiled in (not a PENUMBRA_SCALAR_ONLY build).
-bool simdKernelsAvailable();
-// Name of the SIMD target chosen at run time (e.g. "AVX2"), or "scalar".
-const char* simdTargetName();
 
 }  // namespace penumbra

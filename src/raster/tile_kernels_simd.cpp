@@ -154,7 +154,7 @@ HWY_EXPORT(StencilKernelSimd);
 
 void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
                  KernelCounts& counts, bool simd) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(DepthKernelSimd)(e, primitive, target, counts);
   } else {
     depthKernelScalar(e, primitive, target, counts);
@@ -164,19 +164,11 @@ void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& targ
 void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
                    const StencilTarget& target, KernelCounts& counts, bool simd,
                    StencilOwners owners) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(StencilKernelSimd)(e, contribution, rule, target, counts, owners);
   } else {
     stencilKernelScalar(e, contribution, rule, target, counts, owners);
   }
-}
-
-bool simdKernelsAvailable() { return true; }
-
-// Highway orders targets best-first by lowest bit; dispatch picks the best one compiled in.
-const char* simdTargetName() {
-  const int64_t targets = hwy::SupportedTargets() & HWY_TARGETS;
-  return hwy::TargetName(targets & -targets);
 }
 
 }  // namespace penumbra
@@ -196,9 +188,6 @@ void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
                    StencilOwners owners) {
   stencilKernelScalar(e, contribution, rule, target, counts, owners);
 }
-
-bool simdKernelsAvailable() { return false; }
-const char* simdTargetName() { return "scalar"; }
 
 }  // namespace penumbra
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/simd_dispatch.h"
 #include "raster/depth_buffer.h"
 #include "render/shading_kernel.h"
 
@@ -278,7 +279,7 @@ HWY_EXPORT(ShadeRowSimd);
 
 void shadeRow(const ShadingFrame& frame, int y, ShadingTriangleTable& triangles, vec3* out,
               bool simd) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(ShadeRowSimd)(frame, y, triangles, out);
   } else {
     shadeRowScalar(frame, y, triangles, out);

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/simd_dispatch.h"
 #include "render/image_io.h"
 #include "render/output_file.h"
 #include "scene/mesh_report.h"
@@ -135,7 +136,9 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
       {"height", result.view.height},
       {"technique", technique},
       {"threads", effectiveThreads(options)},
-      {"simd", options.context.simd},
+      // What ran, not what was asked: PENUMBRA_SIMD=off or a scalar-only build overrides it.
+      {"simd", useSimd(options.context.simd)},
+      {"simd_target", useSimd(options.context.simd) ? simdTargetName() : "scalar"},
       {"machine", {{"cpu", machine.cpu_model}, {"cores", machine.cores}}},
       {"eye_pass", statsToJson(result.eye_stats)},
       {"lights", lights},
@@ -155,7 +158,7 @@ std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,
   std::string line = fmt::format("{} {}x{}, {} triangles, {}, {} threads{}: ", scene.name,
                                  result.view.width, result.view.height, scene.triangleCount(),
                                  options.technique.describe(), effectiveThreads(options),
-                                 options.context.simd ? "" : ", scalar");
+                                 useSimd(options.context.simd) ? "" : ", scalar");
   line += fmt::format("eye {:.1f} ms", result.eye_stats.totalMs());
   // Passes of the total that are neither the eye pass's nor a light's (shading, outputs).
   std::map<std::string, int> accounted;

@@ -2,6 +2,8 @@
 // per step, the same float operations in the same order.
 #include "shadows/exact/edge_screen_test.h"
 
+#include "core/simd_dispatch.h"
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -68,7 +70,7 @@ namespace penumbra {
 HWY_EXPORT(EdgeCandidatesSimd);
 
 uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, bool simd) {
-  if (simd) return HWY_DYNAMIC_DISPATCH(EdgeCandidatesSimd)(test, block);
+  if (useSimd(simd)) return HWY_DYNAMIC_DISPATCH(EdgeCandidatesSimd)(test, block);
   return edgeCandidatesScalar(test, block);
 }
 

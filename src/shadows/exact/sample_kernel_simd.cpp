@@ -2,6 +2,8 @@
 // step, the same float operations in the same order, the side tests as all-ones lane masks.
 #include "shadows/exact/sample_kernel.h"
 
+#include "core/simd_dispatch.h"
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -72,7 +74,7 @@ HWY_EXPORT(SamplePositionsSimd);
 
 void samplePositions(const float* radius2, const float* cos_phi, const float* sin_phi,
                      float one_minus_cos_max, float* x, float* y, size_t n, bool simd) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(SamplePositionsSimd)(radius2, cos_phi, sin_phi, one_minus_cos_max, x, y,
                                               n);
   } else {
@@ -82,7 +84,7 @@ void samplePositions(const float* radius2, const float* cos_phi, const float* si
 
 void addEdgeCrossings(const SampleEdge& edge, const float* x, const float* y, int32_t* count,
                       size_t n, bool simd) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(AddEdgeCrossingsSimd)(edge, x, y, count, n);
   } else {
     addEdgeCrossingsScalar(edge, x, y, count, n);

@@ -4,6 +4,7 @@
 // receive a contribution are then added to the 16-bit LI buffer one by one, as in the twin.
 #include <algorithm>
 
+#include "core/simd_dispatch.h"
 #include "shadows/wedge/wedge_kernel.h"
 
 #ifndef PENUMBRA_SCALAR_ONLY
@@ -159,7 +160,7 @@ HWY_EXPORT(WedgeKernelSimd);
 
 void wedgeKernel(const TileEdges& e, const WedgeKernelWork& work, const WedgeKernelTarget& target,
                  WedgeKernelCounts& counts, bool simd) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(WedgeKernelSimd)(e, work, target, counts);
   } else {
     wedgeKernelScalar(e, work, target, counts);
