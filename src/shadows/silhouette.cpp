@@ -95,7 +95,8 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
   // multiplicity and so the penumbra's darkening (repeated_triangles.h). Whether the mesh is
   // closed or consistently oriented is then judged without the repeats (a box stored twice is
   // closed). Shadow volumes count the repeats and shade the same, so they keep them.
-  const bool once = policy == CasterPolicy::SolidWithHoles;
+  const bool other_facing = policy == CasterPolicy::SolidWithHolesOtherFacing;
+  const bool once = policy == CasterPolicy::SolidWithHoles || other_facing;
   const bool closed = once ? adjacency.repeated.closed : mesh.closed;
   const size_t inconsistent =
       once ? adjacency.repeated.inconsistent_edges : adjacency.inconsistent_edges;
@@ -107,10 +108,11 @@ Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
   const std::vector<uint8_t>* skip = repeats.empty() ? nullptr : &repeats;
   if (policy != CasterPolicy::TwoSided && closed) {
     cast_only = insideClosedMesh(mesh, l, skip) ? -1 : 1;
-  } else if (policy == CasterPolicy::SolidWithHoles && inconsistent == 0) {
+  } else if (once && inconsistent == 0) {
     // The facing that covers more of the light's view (silhouette.h). A tie (a closed part
     // seen from outside, up to rounding) goes to the light-facing side.
     cast_only = windingNumber(mesh, l, skip) > 0.0 ? -1 : 1;
+    if (other_facing) cast_only = -cast_only;
   }
   // Facing in double: near-edge-on triangles must get one consistent sign for all their edges.
   parallelFor((n + 8191) / 8192, [&](size_t chunk) {
@@ -144,6 +146,33 @@ std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency,
     if (m != 0) edges.push_back({e.v0, e.v1, m, uint32_t(i)});
   }
   return edges;
+}
+
+bool openMeshWithBothFacings(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light) {
+  if (adjacency.open_edges == 0 || adjacency.repeated.closed ||
+      adjacency.repeated.inconsistent_edges != 0)
+    return false;
+  const dvec3 l(light);
+  const size_t n = mesh.triangleCount();
+  std::vector<uint8_t> seen((n + 8191) / 8192, 0);  // bit 0: light-facing, bit 1: away
+  parallelFor(seen.size(), [&](size_t chunk) {
+    const size_t end = std::min(n, (chunk + 1) * 8192);
+    for (size_t t = chunk * 8192; t < end && seen[chunk] != 3; ++t) {
+      const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
+      const double side = glm::dot(glm::cross(b - a, c - a), l - a);
+      if (side > 0) seen[chunk] |= 1;
+      if (side < 0) seen[chunk] |= 2;
+    }
+  });
+  uint8_t both = 0;
+  for (const uint8_t f : seen) both |= f;
+  return both == 3;
+}
+
+bool anyOpenMeshWithBothFacings(const Scene& scene, const vec3& light) {
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    if (openMeshWithBothFacings(scene.meshes[m], scene.adjacency[m], light)) return true;
+  return false;
 }
 
 }  // namespace penumbra

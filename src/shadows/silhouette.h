@@ -23,6 +23,7 @@
 
 #include "scene/edges.h"
 #include "scene/mesh.h"
+#include "scene/scene.h"
 
 namespace penumbra {
 
@@ -58,7 +59,21 @@ enum class CasterPolicy {
   // where a ray cast finds it shadowed. A mesh with inconsistently oriented edges has no
   // meaningful facing and stays two-sided (overlapping penumbrae at its folds included).
   SolidWithHoles,
+  // The facing SolidWithHoles leaves out, for open, consistently oriented meshes (closed and
+  // inconsistent ones cast as with SolidWithHoles). The wedges draw it in a second pass of
+  // their own and keep the darker visibility (wedge_technique.cpp): a ray from a point that
+  // crosses a triangle of either facing is blocked, so whichever facing's count is not zero,
+  // the point is in the hard shadow, and the rays through a hole that one facing misses, the
+  // other counts.
+  SolidWithHolesOtherFacing,
 };
+
+// Whether the mesh casts differently with SolidWithHolesOtherFacing than with SolidWithHoles
+// where it matters: it has open edges (a hole a ray can pass), is consistently oriented and
+// has triangles facing the light centre both ways. Judged without its repeated triangles.
+bool openMeshWithBothFacings(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light);
+// Whether some mesh of the scene is such a mesh: the wedges' second pass runs only then.
+bool anyOpenMeshWithBothFacings(const Scene& scene, const vec3& light);
 
 Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light,
                           CasterPolicy policy = CasterPolicy::Auto);

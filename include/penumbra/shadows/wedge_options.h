@@ -49,6 +49,12 @@ struct WedgeOptions {
   // 2004 paper's passes (its evaluation, `bench`).
   bool two_level_stencil = true;
   bool smooth_falloff = false;  // s' = 3 s^2 - 2 s^3 (2002 paper, section 4.2)
+  // Open meshes cast one facing (silhouette.h, SolidWithHoles); rays through their holes miss
+  // it, and a second pass with the other facing keeps those points dark (wedge_technique.cpp).
+  // It runs only when some open mesh has triangles facing the light both ways (a terrain, a
+  // scan with an open base), and costs about one more wedge pass over those meshes. false: the
+  // papers' one facing, faster, with light through the holes.
+  bool other_facing_pass = true;
 };
 
 }  // namespace penumbra

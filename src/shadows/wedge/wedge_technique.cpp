@@ -293,7 +293,7 @@ std::string wedgeTechniqueName(WedgeAlgorithm algorithm) {
 
 WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene,
                       const Light& light, const View& view, const EyeBuffers& eye,
-                      const RenderContext& context, int8_t edge_on_facing) {
+                      const RenderContext& context, int8_t edge_on_facing, bool other_facing) {
   WedgeLi result;
   Stats& stats = result.stats;
   const int full = kLiFull;
@@ -308,6 +308,7 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
         algorithm == WedgeAlgorithm::Original2002 ? VolumeMode::ZPass : options.volume_mode;
     frame_options.smooth_falloff = options.smooth_falloff;
     frame_options.edge_on_facing = edge_on_facing;
+    frame_options.other_facing = other_facing;
     frame = buildWedgeFrame(frame_options, scene, light, view, eye);
     stats.silhouette_edges += frame.silhouette_edges;
     stats.wedges += frame.wedges.size();
@@ -361,6 +362,18 @@ class PenumbraWedges final : public PreparedTechnique {
     // facing in a buffer of its own, clamped on its own (edge_on_sheet.h says why); usually
     // none, and then no pass runs. A zero radius has no penumbra and keeps the hard image.
     std::vector<WedgeLi> sheets;
+    // Open meshes cast one facing (silhouette.h, SolidWithHoles), so a ray that enters such a
+    // mesh through a triangle of the other facing and leaves through a hole (a terrain's border
+    // under a low light, a scan's open base) counts nothing and its point comes out lit. The
+    // other facing, in a buffer of its own, counts exactly those rays; both facings' passes
+    // are single-sided, so their folds keep one wedge each, and the darker visibility is kept.
+    if (!hard && options_.other_facing_pass && anyOpenMeshWithBothFacings(scene_, light.center)) {
+      PassTimer timer(result.stats, "other facing");
+      WedgeLi other = renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context, 0,
+                                    /*other_facing=*/true);
+      result.stats.addCounters(other.stats);
+      sheets.push_back(std::move(other));
+    }
     if (!hard && anyEdgeOnToLight(scene_, light)) {
       PassTimer timer(result.stats, "edge-on sheets");
       for (const int8_t facing : {int8_t(1), int8_t(-1)}) {
@@ -413,11 +426,16 @@ TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm) {
   OptionTableBuilder<WedgeOptions> options;
   options.flag("smooth", "smooth falloff s' = 3s^2 - 2s^3 (2002 paper, section 4.2)",
                &WedgeOptions::smooth_falloff);
+  options.flag("one-facing",
+               "open meshes cast one facing only, as in the papers (faster where an open mesh "
+               "faces the light both ways, but light passes through its holes)",
+               &WedgeOptions::other_facing_pass, false);
   if (algorithm == WedgeAlgorithm::Original2002) {
     info.summary = "penumbra wedges as in the 2002 paper: z-pass, entry and exit per pixel, "
                    "no culling";
     options.describe([](const WedgeOptions& o) {
-      return std::string("zpass") + (o.smooth_falloff ? ", smooth" : "");
+      return std::string("zpass") + (o.smooth_falloff ? ", smooth" : "") +
+             (o.other_facing_pass ? "" : ", one facing");
     });
   } else {
     info.summary = algorithm == WedgeAlgorithm::ThreePass
@@ -457,9 +475,10 @@ TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm) {
     options.describe([](const WedgeOptions& o) {
       const char* stencil =
           o.two_level_stencil || o.cull != CullMode::Full ? "" : ", one-level stencil";
-      return fmt::format("{}, cull {}, {}x{} tiles{}{}", volumeModeName(o.volume_mode),
+      return fmt::format("{}, cull {}, {}x{} tiles{}{}{}", volumeModeName(o.volume_mode),
                          cullModeName(o.cull), 1 << o.tile_level, 1 << o.tile_level, stencil,
-                         o.smooth_falloff ? ", smooth" : "");
+                         o.smooth_falloff ? ", smooth" : "",
+                         o.other_facing_pass ? "" : ", one facing");
     });
   }
   options.check([](const WedgeOptions& o) {

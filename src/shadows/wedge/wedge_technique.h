@@ -15,9 +15,11 @@ TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm);
 // The wedge passes up to the LI buffer (li_buffer.h), for comparing implementations.
 // `edge_on_facing` +1 or -1 draws only the edge-on casters with that facing that the casters'
 // own silhouettes leave out (WedgeFrameOptions, edge_on_sheet.h); when there are none, the
-// returned buffer is empty (0 x 0) and no pass ran.
+// returned buffer is empty (0 x 0) and no pass ran. `other_facing`: open meshes cast the
+// facing they otherwise leave out (WedgeFrameOptions::other_facing).
 WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene,
                       const Light& light, const View& view, const EyeBuffers& eye,
-                      const RenderContext& context = {}, int8_t edge_on_facing = 0);
+                      const RenderContext& context = {}, int8_t edge_on_facing = 0,
+                      bool other_facing = false);
 
 }  // namespace penumbra
