@@ -293,3 +293,146 @@ TEST(MaskTechnique, FullResolutionMatchesVolumesOnSharedModels) {
 
 }  // namespace
 }  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// k boxes over a ground plane, lit from high above: in a row along the view ray (the ray to the
+// ground point under box 0 crosses the shadow prisms of boxes k-1 .. 1 in front of it and ends
+// inside box 0's), or stacked (the ground point lies inside all k prisms). As one caster mesh
+// (one volume) or k meshes (k volumes).
+Scene boxesOverGround(int k, bool in_a_row, bool one_caster) {
+  Scene s;
+  s.name = "mask-limit";
+  s.materials.push_back(Material{});
+  s.meshes.push_back(makeGroundPlane(vec3(0), 40.0f));
+  Mesh merged;
+  merged.name = "boxes";
+  for (int i = 0; i < k; ++i) {
+    const float x = in_a_row ? float(i) : 0.0f, y = in_a_row ? 4.0f : 4.0f + 0.3f * float(i);
+    Mesh box = makeBox(vec3(x - 0.4f, y, -2.0f), vec3(x + 0.4f, y + 0.2f, 2.0f));
+    if (!one_caster) {
+      s.meshes.push_back(std::move(box));
+      continue;
+    }
+    const uint32_t base = uint32_t(merged.positions.size());
+    merged.positions.insert(merged.positions.end(), box.positions.begin(), box.positions.end());
+    for (uint32_t index : box.indices) merged.indices.push_back(base + index);
+    merged.corner_normals.insert(merged.corner_normals.end(), box.corner_normals.begin(),
+                                 box.corner_normals.end());
+  }
+  if (one_caster) s.meshes.push_back(std::move(merged));
+  s.lights.push_back(Light{vec3(0, 20, 0), 0.0f, vec3(1), 1.0f});
+  // The view ray to the ground point under box 0 stays below the boxes (height 3 at most).
+  s.camera.position = vec3(float(k) + 3.0f, 3.0f, 0.0f);
+  s.camera.target = vec3(0.0f);
+  s.camera.fov_y = 10.0f;
+  s.camera.near_plane = 0.05f;
+  s.finalize();
+  return s;
+}
+
+// The visibility at the pixel showing the ground point under box 0 (the view's centre).
+float centreVisibility(const TechniqueConfig& config, const Scene& scene) {
+  const Frame f = testing::makeEyeFrame(scene, 64, 48);
+  const TechniqueResult r = renderShadows(config, f.scene, f.scene.lights[0], f.view, f.eye);
+  return r.visibility.at(32, 24);
+}
+
+// The 8-bit limit (docs/reproducing-hsv-and-masks.md), on the pixel the tests above cannot aim
+// at: a ground point in shadow, seen through k layers of shadow volume.
+//  - k volumes in a row: the clamping argument of section 4.2 holds for any k (each volume
+//    doubles and halves once), both normalisations right up to 12.
+//  - k stacked volumes (the point inside all k, the count k): right up to 12, though three-pass
+//    holds only 1/2 or 1 from k = 2 and max-blend sits at 2^-8 from k = 8: the count is lost
+//    but never needed.
+//  - one caster of k boxes in a row (one volume the ray crosses 2k - 1 times, all its front
+//    faces first): three-pass loses the point from k = 3 (1/4 * 2^3 clamps at 1, then two
+//    halvings leave 1/4: lit), max-blend from k = 9 (1 halved 9 times stops at 2^-8, doubled 8
+//    times back to 1: lit).
+// `volume` says shadowed every time: the scene does what the test claims. If this failed, the
+// blends would round or clamp otherwise than mask_values.h says, or the limit would have moved.
+TEST(MaskTechnique, EightBitLimitOnKLayersOfVolume) {
+  const MaskConfig& three_pass = kFullResolutionConfigs[0];
+  const MaskConfig& max_blend = kFullResolutionConfigs[2];
+  for (const int k : {1, 2, 3, 8, 9, 12}) {
+    for (const bool in_a_row : {true, false}) {
+      for (const bool one_caster : {false, true}) {
+        if (!in_a_row && one_caster) continue;  // stacked boxes in one mesh overlap their volumes
+        const Scene scene = boxesOverGround(k, in_a_row, one_caster);
+        const std::string what = std::to_string(k) + (in_a_row ? " in a row" : " stacked") +
+                                 (one_caster ? ", one caster" : ", k casters");
+        ASSERT_EQ(centreVisibility(TechniqueConfig("volume", VolumeOptions{VolumeMode::ZPass}), scene),
+                  0.0f)
+            << what;
+        const bool three_pass_right = !(in_a_row && one_caster) || k <= 2;
+        const bool max_blend_right = !(in_a_row && one_caster) || k <= 8;
+        EXPECT_EQ(centreVisibility(maskConfig(three_pass, VolumeMode::ZPass), scene),
+                  three_pass_right ? 0.0f : 1.0f)
+            << what << ", three-pass";
+        EXPECT_EQ(centreVisibility(maskConfig(max_blend, VolumeMode::ZPass), scene),
+                  max_blend_right ? 0.0f : 1.0f)
+            << what << ", max-blend";
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// Section 4.5: the mask at 1/2 and 1/4 of the resolution, with its own depth pass, bilinearly
+// magnified. Against the full-resolution mask and the hard oracle (one ray to the centre), over
+// covered pixels of every built-in scene and light at 192 x 128: the mean absolute visibility
+// error, and the mask's pixel writes (stencil_writes), which fall by about scale^2. Bounds are
+// the measured errors rounded up (docs/reproducing-hsv-and-masks.md has the figures): a low-
+// resolution mask errs only near shadow boundaries, by up to a texel of the low-resolution grid
+// each side. If this failed, the magnification would be misplaced (a shift of half a texel
+// doubles the error), or the low-resolution depth pass would not match the view.
+TEST(MaskTechnique, LowResolutionMasksErrorAndPixelsSaved) {
+  const double kMaxErrorVsFull[] = {0.0, 0.09, 0.13};  // scale 1, 2, 4 (columns: 0.078, 0.111)
+  for (const std::string& name : builtinSceneNames()) {
+    const Frame f = testing::makeEyeFrame(builtinScene(name), 192, 128);
+    TechniqueConfig reference("reference");
+    reference.options<ReferenceOptions>().hard = true;
+    double error_full[3] = {0, 0, 0}, error_oracle[3] = {0, 0, 0};
+    uint64_t writes[3] = {0, 0, 0};
+    size_t covered = 0;
+    for (const Light& light : f.scene.lights) {
+      const TechniqueResult oracle = renderShadows(reference, f.scene, light, f.view, f.eye);
+      TechniqueResult full;
+      for (int s = 0; s < 3; ++s) {
+        const TechniqueResult r = renderShadows(
+            maskConfig(kFullResolutionConfigs[0], VolumeMode::Auto, 1 << s), f.scene, light,
+            f.view, f.eye);
+        writes[s] += r.stats.stencil_writes;
+        if (s == 0) full = r;
+        for (size_t i = 0; i < r.visibility.size(); ++i) {
+          if (f.eye.primitive[i] == kNoPrimitive) continue;
+          if (s == 0) ++covered;
+          error_full[s] += std::fabs(double(r.visibility[i]) - double(full.visibility[i]));
+          error_oracle[s] += std::fabs(double(r.visibility[i]) - double(oracle.visibility[i]));
+        }
+      }
+    }
+    for (int s = 0; s < 3; ++s) {
+      error_full[s] /= double(covered);
+      error_oracle[s] /= double(covered);
+      std::printf("[ masks    ] %-10s 1/%d: MAE vs full-resolution mask %.4f, vs oracle %.4f, "
+                  "mask writes %llu (%.2fx fewer)\n",
+                  name.c_str(), 1 << s, error_full[s], error_oracle[s],
+                  (unsigned long long)writes[s], double(writes[0]) / double(std::max<uint64_t>(writes[s], 1)));
+      EXPECT_LE(error_full[s], kMaxErrorVsFull[s]) << name << " 1/" << (1 << s);
+      EXPECT_LE(error_oracle[s], kMaxErrorVsFull[s] + 0.025) << name << " 1/" << (1 << s);
+    }
+    EXPECT_GT(error_full[1], 0.0) << name << ": a half-resolution mask cannot be exact here";
+    EXPECT_GT(double(writes[0]), 3.0 * double(writes[1])) << name;
+    EXPECT_GT(double(writes[1]), 3.0 * double(writes[2])) << name;
+  }
+}
+
+}  // namespace
+}  // namespace penumbra
