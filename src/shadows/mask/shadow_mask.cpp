@@ -137,13 +137,13 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
   if (!options.normalise) return mask;
   // Section 4.3, Figure 4, and section 4.4, Figure 5: each rectangle a pass over the window.
   if (options.normalisation == MaskNormalisation::MaxBlend) {
-    rectanglePass(mask, stats, "mask rectangle max 1/2", maxBlendRectangle);
+    rectanglePass(mask, stats, "mask rectangle 1 max 1/2", maxBlendRectangle);
   } else {
-    rectanglePass(mask, stats, "mask rectangle *2", threePassRectangle1);
-    rectanglePass(mask, stats, "mask rectangle invert", threePassRectangle2);
+    rectanglePass(mask, stats, "mask rectangle 1 *2", threePassRectangle1);
+    rectanglePass(mask, stats, "mask rectangle 2 invert", threePassRectangle2);
     const MaskShadowMode mode = options.shadow;
     rectanglePass(mask, stats,
-                  mode == MaskShadowMode::Attenuated ? "mask rectangle +1/2" : "mask rectangle *2",
+                  mode == MaskShadowMode::Attenuated ? "mask rectangle 3 +1/2" : "mask rectangle 3 *2",
                   [mode](uint32_t v) { return threePassRectangle3(v, mode); });
   }
   return mask;
