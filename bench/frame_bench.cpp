@@ -24,6 +24,7 @@
 #include "bench_scenes.h"
 #include "core/parallel.h"
 #include "render/eye_pass.h"
+#include "shadows/mask_options.h"
 #include "render/frame.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
@@ -165,6 +166,15 @@ bool registerFrameBenchmarks() {
     TechniqueConfig soft("reference");
     soft.options<ReferenceOptions>().rays = 64;
     cases.push_back({"reference-64", soft, 0.5});
+    // Roettger et al.'s shadow masks (docs/reproducing-hsv-and-masks.md): alpha, colour, and the
+    // alpha mask at half and quarter resolution.
+    cases.push_back({"mask-alpha", TechniqueConfig("mask-alpha"), 0.3});
+    cases.push_back({"mask-colour", TechniqueConfig("mask-colour"), 0.3});
+    for (const int scale : {2, 4}) {
+      TechniqueConfig low("mask-alpha");
+      low.options<MaskOptions>().scale = scale;
+      cases.push_back({fmt::format("mask-alpha-1/{}", scale), low, 0.3});
+    }
   }
   for (const TechniqueCase& c : cases) {
     const std::string name = fmt::format("Technique/columns/640x427/{}", c.id);
