@@ -3,6 +3,7 @@
 #include "shadows/technique_table.h"
 
 #include "shadows/exact/exact_technique.h"
+#include "shadows/pcss/pcss_technique.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/shadowmap/shadow_map_technique.h"
 #include "shadows/volume/volume_technique.h"
@@ -18,6 +19,7 @@ std::vector<TechniqueInfo> builtinTechniques() {
       wedgeTechnique(WedgeAlgorithm::Original2002),
       exactTechnique(),
       shadowMapTechnique(),
+      pcssTechnique(),
       referenceTechnique(),
   };
 }

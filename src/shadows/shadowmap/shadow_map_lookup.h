@@ -25,7 +25,7 @@ double receiverSlope(const Scene& scene, uint32_t primitive, const dvec3& p, con
 
 // Writes `visibility` (sized like the eye buffers): 1 on the background, 0 where the visible
 // triangle faces away from the light, 0 for a spotlight's points outside its frustum, else
-// lookup(p, map_point, slope) for the visible point p. With `limit` (a lightFrustumStencil of
+// lookup(x, y, p, map_point, slope) for the visible point p of pixel (x, y). With `limit` (a lightFrustumStencil of
 // the spot), pixels it does not hold are not looked up: they get what a point outside the
 // frustum gets (0 for a spotlight; a fitted spot holds every visible point, so none). Counts
 // shadow_map_lookups (pixels looked up) and lookups_saved (pixels the limit skipped).
@@ -47,7 +47,7 @@ void lookupVisiblePoints(const Scene& scene, const Light& light, const View& vie
     const MapPoint m = maps.project(p);
     if (!(m.w > 0.0)) return 1.0f;  // at the light centre itself
     if (!m.inside && maps.frustums.spotlight) return 0.0f;
-    return lookup(p, m, receiverSlope(scene, eye.primitive.at(x, y), p, centre));
+    return lookup(x, y, p, m, receiverSlope(scene, eye.primitive.at(x, y), p, centre));
   });
   for (const uint64_t n : done) stats.shadow_map_lookups += n;
   for (const uint64_t n : saved) stats.lookups_saved += n;

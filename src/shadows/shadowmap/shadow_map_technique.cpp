@@ -56,7 +56,7 @@ class ShadowMap final : public PreparedTechnique {
     const double reach = 0.5 * double(kernel + 1);  // texels from p to the farthest lookup
     lookupVisiblePoints(
         scene_, light, view, eye, maps, limit ? &*limit : nullptr, result.visibility, stats,
-        [&](const dvec3&, const MapPoint& m, double slope) {
+        [&](int, int, const dvec3&, const MapPoint& m, double slope) {
           // Bias, in world units along the axis, from the texel's world size at p's distance.
           const double bias = maps.texelSize(m.face, m.w) *
                               (options_.constant_bias + options_.slope_bias * slope * reach);
