@@ -184,6 +184,22 @@ bool registerFrameBenchmarks() {
                                        }),
           c.min_time);
   }
+  // Shadow maps beside the volume techniques, in the same run (issue 12): the standard map and
+  // PCSS with their defaults, on `columns` and `fractal` at the papers' size and at 1080p.
+  for (const char* scene : {"columns", "fractal"}) {
+    for (const Size size : {Size{640, 427}, Size{1920, 1080}}) {
+      for (const char* id : {"volume", "wedge-3pass", "shadow-map", "pcss"}) {
+        const std::string name =
+            fmt::format("ShadowMapPeers/{}/{}x{}/{}", scene, size.width, size.height, id);
+        timed(benchmark::RegisterBenchmark(
+                  name.c_str(),
+                  [scene = std::string(scene), size, id = std::string(id)](benchmark::State& s) {
+                    technique(s, scene, size.width, size.height, TechniqueConfig(id));
+                  }),
+              0.3);
+      }
+    }
+  }
   return true;
 }
 

@@ -4,6 +4,7 @@
 
 #include "shadows/exact/exact_technique.h"
 #include "shadows/mask/mask_technique.h"
+#include "shadows/pcss/pcss_technique.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/shadowmap/shadow_map_technique.h"
 #include "shadows/volume/volume_technique.h"
@@ -18,9 +19,10 @@ std::vector<TechniqueInfo> builtinTechniques() {
       wedgeTechnique(WedgeAlgorithm::SinglePass),
       wedgeTechnique(WedgeAlgorithm::Original2002),
       exactTechnique(),
-      shadowMapTechnique(),
       maskTechnique(MaskChannel::Alpha),
       maskTechnique(MaskChannel::Colour),
+      shadowMapTechnique(),
+      pcssTechnique(),
       referenceTechnique(),
   };
 }

@@ -24,6 +24,10 @@ namespace penumbra {
   X(wedges, "penumbra wedges built")                                                             \
   X(triangles, "triangles set up for rasterization (after clipping)")                            \
   X(rays, "oracle shadow rays (incl. ones its surface blocks untraced)")                         \
+  /* Shadow maps: pixels whose point was looked up, and the ones a stencil-limited map */        \
+  /* skipped as outside the light's frustum (Arvo & Aila 2003; thesis section 4.2). */           \
+  X(shadow_map_lookups, "pixels whose point was looked up in a shadow map")                      \
+  X(lookups_saved, "pixels a stencil-limited shadow map skipped: outside the light frustum")     \
   /* Pixels whose depth point was tested against a wedge, and of those the ones truly inside */  \
   /* it. Their ratio is the distance from perfect culling (2004 paper, section 4). */            \
   X(penumbra_tests, "pixels whose point was tested against a wedge")                             \

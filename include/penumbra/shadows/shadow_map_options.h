@@ -3,8 +3,17 @@
 //   config.options<penumbra::ShadowMapOptions>().resolution = 2048;
 namespace penumbra {
 
+// How the light's depth is laid out (Aila 2005 thesis, section 2.3: one frustum covers a
+// limited field of view; a light inside or near the view needs several).
+enum class ShadowMapProjection {
+  Auto,  // spot when the light is outside the box of the view's visible points and a frustum
+         // of at most 90 degrees holds that box; cube otherwise
+  Cube,  // six 90-degree faces around the light centre: any light position
+  Spot,  // one square frustum from the light centre (spot_fov says which)
+};
+
 struct ShadowMapOptions {
-  // Texels along each side of each of the six cube faces around the light centre.
+  // Texels along each side of each face (six for a cube, one for a spot).
   int resolution = 1024;
   // Percentage-closer filtering: an N x N kernel of depth lookups around the projected point,
   // visibility = the fraction that is lit. 1 = the plain shadow map (0 or 1 per pixel). Odd.
@@ -15,6 +24,19 @@ struct ShadowMapOptions {
   // kernel's reach ((N + 1) / 2 texels), the tangent capped at 10.
   double constant_bias = 1.0;
   double slope_bias = 1.0;
+  ShadowMapProjection projection = ShadowMapProjection::Auto;
+  // 0: the spot frustum is fitted around the view's visible points, so it shadows exactly what
+  // a cube would (the light still shines everywhere). > 0: the light is a spotlight: a square
+  // frustum of this full angle in degrees, aimed from the light centre at the centre of the
+  // scene's bounds, and points outside it get no light (needs projection spot or auto, which
+  // it makes a spot). The other techniques and the oracle know no spotlights: compare with them
+  // only at 0.
+  double spot_fov = 0.0;
+  // Arvo & Aila 2003 (the thesis's publication P4, section 4.2): the spot frustum is drawn as a
+  // volume into a stencil over the eye's depth buffer, and only pixels inside it are looked up;
+  // the others get what a lookup outside the frustum gives. Same image, fewer lookups. Needs a
+  // spot (with auto, it applies when auto picks one).
+  bool stencil_limit = false;
 };
 
 }  // namespace penumbra

@@ -59,6 +59,11 @@ struct TechniqueTraits {
   // visibility error over pixels showing geometry, and over penumbra pixels (0 < oracle < 1).
   double covered_mae_bound = 1.0;
   double penumbra_mae_bound = 1.0;
+  // Soft techniques that are not ray-traced: 0 means radius 0 gives the hard volume's image
+  // exactly. A soft technique whose radius-0 limit is itself approximate (PCSS becomes the plain
+  // shadow map, whose boundaries move by up to a texel) declares instead the mean absolute
+  // difference from the hard volume over covered pixels that it keeps within at radius 0.
+  double zero_radius_mae_bound = 0.0;
 };
 
 struct TechniqueInfo {
