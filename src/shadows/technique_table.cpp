@@ -2,7 +2,9 @@
 // names it. Order is the order of `penumbra techniques` and of the conformance suite.
 #include "shadows/technique_table.h"
 
+#include "shadows/coverage/coverage_technique.h"
 #include "shadows/exact/exact_technique.h"
+#include "shadows/heckbert_herf/heckbert_herf_technique.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/shadowmap/shadow_map_technique.h"
 #include "shadows/volume/volume_technique.h"
@@ -16,7 +18,9 @@ std::vector<TechniqueInfo> builtinTechniques() {
       wedgeTechnique(WedgeAlgorithm::ThreePass),
       wedgeTechnique(WedgeAlgorithm::SinglePass),
       wedgeTechnique(WedgeAlgorithm::Original2002),
+      coverageTechnique(),
       exactTechnique(),
+      heckbertHerfTechnique(),
       shadowMapTechnique(),
       referenceTechnique(),
   };

@@ -96,6 +96,7 @@ class ShadowMap final : public PreparedTechnique {
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override {
+    requireSphereLight(light, "shadow-map");
     TechniqueResult result;
     Stats& stats = result.stats;
     const int size = options_.resolution;
