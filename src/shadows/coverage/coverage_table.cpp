@@ -8,7 +8,7 @@
 
 namespace penumbra {
 namespace {
-constexpr double kTwoPi = 6.28318530717958647692;
+constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 CoverageTableData::CoverageTableData(LightOutline outline, int n) : outline_(outline), n_(n) {
@@ -16,76 +16,82 @@ CoverageTableData::CoverageTableData(LightOutline outline, int n) : outline_(out
                  "coverage table size {} is outside {}..{}", n, kMinCoverageTableSize,
                  kMaxCoverageTableSize);
   const size_t n1 = size_t(n);
+  const double last = double(n - 1);
+  if (outline_ == LightOutline::Disk) {
+    // (r0, r1, dtheta): the first point on the +x axis, the second at angle dtheta from it. The
+    // end nodes dtheta = -pi and pi hold the one-sided limits (sin(+-pi) rounds to +-1e-16, so
+    // insideFraction sees the turn's sign), so no cell straddles the jump.
+    values_.resize(n1 * n1 * n1);
+    parallelFor(n1, [&](size_t i0) {
+      const dvec2 q0(double(i0) / last, 0.0);
+      float* out = values_.data() + i0 * n1 * n1;
+      for (int i1 = 0; i1 < n; ++i1) {
+        for (int k = 0; k < n; ++k) {
+          const double r1 = double(i1) / last, dtheta = kPi * (2.0 * double(k) / last - 1.0);
+          *out++ = float(insideFraction(outline_, q0, r1 * dvec2(std::cos(dtheta), std::sin(dtheta))));
+        }
+      }
+    });
+    return;
+  }
   values_.resize(n1 * n1 * n1 * n1);
   parallelFor(n1 * n1, [&](size_t first) {
-    const dvec2 q0 = point(int(first / n1), int(first % n1));
+    const dvec2 q0 = squarePoint(int(first / n1), int(first % n1));
     float* out = values_.data() + first * n1 * n1;
     for (int i1 = 0; i1 < n; ++i1) {
-      for (int j1 = 0; j1 < n; ++j1) {
-        *out++ = float(insideFraction(outline_, q0, point(i1, j1)));
-      }
+      for (int j1 = 0; j1 < n; ++j1) *out++ = float(insideFraction(outline_, q0, squarePoint(i1, j1)));
     }
   });
 }
 
-dvec2 CoverageTableData::point(int i, int j) const {
-  const double step = 1.0 / double(n_ - 1);
-  if (outline_ == LightOutline::Disk) {
-    const double r = double(i) * step, theta = kTwoPi * double(j) / double(n_);
-    return dvec2(r * std::cos(theta), r * std::sin(theta));
-  }
-  return dvec2(2.0 * double(i) * step - 1.0, 2.0 * double(j) * step - 1.0);
-}
-
-dvec2 CoverageTableData::coordinates(const dvec2& q) const {
-  const double last = double(n_ - 1);
-  if (outline_ == LightOutline::Disk) {
-    const double r = std::min(1.0, glm::length(q));
-    double theta = std::atan2(q.y, q.x);
-    if (theta < 0.0) theta += kTwoPi;
-    // In [0, n); an angle that rounds up to 2 pi wraps to 0 here and in the lookups.
-    double v = theta * double(n_) / kTwoPi;
-    if (!(v < double(n_))) v = 0.0;
-    return dvec2(r * last, v);
-  }
-  return dvec2(std::clamp((q.x + 1.0) * 0.5, 0.0, 1.0) * last,
-               std::clamp((q.y + 1.0) * 0.5, 0.0, 1.0) * last);
+dvec2 CoverageTableData::squarePoint(int i, int j) const {
+  const double step = 2.0 / double(n_ - 1);
+  return dvec2(double(i) * step - 1.0, double(j) * step - 1.0);
 }
 
 float CoverageTableData::lookupInside(const dvec2& lo, const dvec2& hi,
                                       CoverageTable mode) const {
-  const dvec2 c0 = coordinates(lo), c1 = coordinates(hi);
-  const bool polar = outline_ == LightOutline::Disk;
-  // Second index of a point: wraps for an angle, clamps for a coordinate.
-  const auto second = [&](int j) { return polar ? (j % n_ + n_) % n_ : std::clamp(j, 0, n_ - 1); };
-  if (mode == CoverageTable::Nearest) {
-    return entry(int(std::lround(c0.x)), second(int(std::lround(c0.y))), int(std::lround(c1.x)),
-                 second(int(std::lround(c1.y))));
+  const double last = double(n_ - 1);
+  // Continuous table coordinates, each in [0, n - 1].
+  double coords[4];
+  int dims;
+  if (outline_ == LightOutline::Disk) {
+    const double dtheta = std::atan2(lo.x * hi.y - lo.y * hi.x, glm::dot(lo, hi));
+    coords[0] = std::min(1.0, glm::length(lo)) * last;
+    coords[1] = std::min(1.0, glm::length(hi)) * last;
+    coords[2] = std::clamp((dtheta + kPi) / (2.0 * kPi), 0.0, 1.0) * last;
+    dims = 3;
+  } else {
+    const double c[4] = {lo.x, lo.y, hi.x, hi.y};
+    for (int k = 0; k < 4; ++k) coords[k] = std::clamp((c[k] + 1.0) * 0.5, 0.0, 1.0) * last;
+    dims = 4;
   }
-  // Quadlinear: the 16 entries around (c0, c1), weighted by the product of the four 1D
-  // linear weights.
+  const auto at = [&](const int* index) {
+    size_t flat = 0;
+    for (int k = 0; k < dims; ++k) flat = flat * size_t(n_) + size_t(index[k]);
+    return double(values_[flat]);
+  };
+  int index[4];
+  if (mode == CoverageTable::Nearest) {
+    for (int k = 0; k < dims; ++k) index[k] = int(std::lround(coords[k]));
+    return float(at(index));
+  }
+  // Multilinear over all parameters: 2^dims entries weighted by the product of the 1D weights.
   int base[4];
   double frac[4];
-  const double coords[4] = {c0.x, c0.y, c1.x, c1.y};
-  for (int k = 0; k < 4; ++k) {
-    const bool angle = polar && (k % 2 == 1);
-    const double c = coords[k];
-    int b = int(std::floor(c));
-    if (!angle) b = std::clamp(b, 0, n_ - 2);
-    base[k] = b;
-    frac[k] = std::clamp(c - double(b), 0.0, 1.0);
+  for (int k = 0; k < dims; ++k) {
+    base[k] = std::clamp(int(std::floor(coords[k])), 0, n_ - 2);
+    frac[k] = std::clamp(coords[k] - double(base[k]), 0.0, 1.0);
   }
   double sum = 0.0;
-  for (int corner = 0; corner < 16; ++corner) {
-    int index[4];
+  for (int corner = 0; corner < (1 << dims); ++corner) {
     double weight = 1.0;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < dims; ++k) {
       const int bit = (corner >> k) & 1;
       index[k] = base[k] + bit;
       weight *= bit ? frac[k] : 1.0 - frac[k];
     }
-    if (weight == 0.0) continue;
-    sum += weight * double(entry(index[0], second(index[1]), index[2], second(index[3])));
+    if (weight != 0.0) sum += weight * at(index);
   }
   return float(sum);
 }

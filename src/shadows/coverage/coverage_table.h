@@ -1,23 +1,28 @@
 #pragma once
 // The 2003 paper's coverage texture (Funk 2004, sections 2.1.3 and 3.1.3): each silhouette
-// edge's covered fraction of the light precomputed over the edge's two end points once clipped
-// to the light, n values per parameter, n^4 entries (the paper's n = 32 flattened to a
-// 1024 x 1024 texture: row n r1 + r2, column n theta1 + theta2). Kept as an option against the
-// exact area (shape_coverage.h), which is the default.
+// edge's covered fraction of the light precomputed over the edge's end points once clipped to
+// the light, n values per parameter (the paper's n = 32: 32^4 entries flattened to a
+// 1024 x 1024 texture). Kept as an option against the exact area (shape_coverage.h), which is
+// the default. One table serves every disk and one every rectangle: the fraction does not
+// depend on the size or aspect (shape_coverage.h).
 //
-// Parameters: a disk's clipped end points in polar form (r in [0, 1], n values from 0 to 1
-// inclusive; theta in [0, 2 pi), n values 2 pi k / n with the last cell wrapping back to 0:
-// Funk's section 4.1 artifact was an angle rounded up to 2 pi and not wrapped); a rectangle's,
-// scaled to the square [-1, 1]^2, in Cartesian form (n values from -1 to 1). One table serves
-// every disk and one every rectangle: the fraction does not depend on the size or aspect
-// (shape_coverage.h). Symmetries the report names: swapping the end points negates the entry
-// and rotating both (any angle for a disk, quarter turns for a square) keeps it; the table
-// stores all n^4 entries as the paper's texture does, and the symmetries are checked by tests.
+// Rectangles (scaled to the square [-1, 1]^2): the paper's 4D table over the end points'
+// Cartesian coordinates, n values from -1 to 1 each, n^4 entries.
+// Disks (sphere and disk lights): the polar parameterisation of Funk's section 3.1.3 with the
+// rotation symmetry his section 3.1.3 names applied: the fraction depends on the end points'
+// radii and the angle between them only, so the table is 3D, (r0, r1, dtheta), n^3 entries
+// (r in [0, 1], dtheta in [-pi, pi], n values each, both ends inclusive). The angle is the
+// signed difference atan2(cross, dot), never an absolute angle, so there is no wrap to get
+// wrong (Funk's section 4.1 artifact was an absolute angle rounded up to 2 pi); and the
+// fraction's one jump, where the edge passes through the light centre (the point crosses the
+// hard quad's plane and the hard pass jumps back), lies exactly at dtheta = +-pi, the table's
+// ends, so no cell interpolates across it. The other symmetry (swapping the end points negates
+// the entry) is not used; tests check both.
 //
-// The fraction jumps by one where the edge's line passes through the light centre (the point
-// crosses the hard quad's plane, and the hard pass jumps back), so entries whose cell straddles
-// that line are wrong on one side; nearest lookup has the step artifacts of Funk's section 4.4,
-// quadlinear (16 entries) smooths them away from the jump.
+// The square table keeps the jump inside its cells: entries whose cell straddles the line
+// through the centre are wrong on one side, which shows as thin lines along the hard shadow's
+// boundary (docs/coverage-soft-shadows.md). Nearest lookup has the steps of Funk's section
+// 4.4; quadlinear (trilinear for disks) interpolates 16 (8) entries.
 #include <map>
 #include <memory>
 #include <mutex>
@@ -42,16 +47,10 @@ class CoverageTableData {
   float lookup(const dvec3& a, const dvec3& b, CoverageTable mode) const;
   // The fraction for end points already inside the light.
   float lookupInside(const dvec2& lo, const dvec2& hi, CoverageTable mode) const;
-  // Entry (i0, j0, i1, j1): first point's (r or x, theta or y) indices, then the second's.
-  float entry(int i0, int j0, int i1, int j1) const {
-    return values_[((size_t(i0) * size_t(n_) + size_t(j0)) * size_t(n_) + size_t(i1)) *
-                       size_t(n_) + size_t(j1)];
-  }
+  size_t entries() const { return values_.size(); }
 
  private:
-  // Continuous table coordinates of a point: (u, v) in [0, n - 1] (angles in [0, n)).
-  dvec2 coordinates(const dvec2& q) const;
-  dvec2 point(int i, int j) const;  // the point an entry's indices stand for
+  dvec2 squarePoint(int i, int j) const;  // the square's grid point (i, j)
 
   LightOutline outline_;
   int n_;
