@@ -14,6 +14,7 @@
 #include "shadows/coverage/coverage_table.h"
 #include "shadows/coverage/disk_coverage_kernel.h"
 #include "shadows/coverage/shape_coverage.h"
+#include "shadows/coverage/square_coverage_kernel.h"
 
 namespace penumbra {
 namespace {
@@ -71,10 +72,17 @@ TEST(CoverageArea, ExactAreaMatchesDenseSamplingOfTheLight) {
   EXPECT_GE(nonzero, 6) << "too few segments crossed the light to test anything";
 }
 
-// The float kernel (what `coverage` runs for sphere and disk lights) against the exact area in
-// double, end points given in homogeneous form with random depths W, some behind the point
-// (W < 0): within 1e-5 of the light. And the SIMD kernel gives the scalar twin's bits.
-TEST(CoverageArea, FloatKernelAndSimdTwinMatchTheExactArea) {
+// The float kernels (what `coverage` runs: the disk's for sphere and disk lights, the
+// square's for rectangles) against the exact area in double, end points given in homogeneous
+// form with random depths W, some behind the point (W < 0): within 1e-5 of the light. And each
+// SIMD kernel gives its scalar twin's bits.
+class FloatKernels : public ::testing::TestWithParam<LightOutline> {};
+
+TEST_P(FloatKernels, MatchTheExactAreaAndTheirSimdTwins) {
+  const LightOutline outline = GetParam();
+  const auto one = outline == LightOutline::Disk ? diskCoverageOne : squareCoverageOne;
+  const auto scalar_kernel = outline == LightOutline::Disk ? diskCoverageScalar : squareCoverageScalar;
+  const auto kernel = outline == LightOutline::Disk ? diskCoverage : squareCoverage;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.6, 1.6), w(-0.5, 3.0);
   const int n = 4099;  // not a multiple of any vector width
@@ -88,8 +96,8 @@ TEST(CoverageArea, FloatKernelAndSimdTwinMatchTheExactArea) {
     x1[k] = float(b.x), y1[k] = float(b.y), w1[k] = float(b.z);
     // The reference from the float-rounded inputs, so only the kernel's arithmetic is judged.
     const double exact = beyondFractionHomogeneous(
-        LightOutline::Disk, dvec3(x0[k], y0[k], w0[k]), dvec3(x1[k], y1[k], w1[k]));
-    const float got = diskCoverageOne(x0[k], y0[k], w0[k], x1[k], y1[k], w1[k]);
+        outline, dvec3(x0[k], y0[k], w0[k]), dvec3(x1[k], y1[k], w1[k]));
+    const float got = one(x0[k], y0[k], w0[k], x1[k], y1[k], w1[k]);
     worst = std::max(worst, std::fabs(double(got) - exact));
     crossing += std::fabs(exact) > 1e-3;
   }
@@ -99,10 +107,16 @@ TEST(CoverageArea, FloatKernelAndSimdTwinMatchTheExactArea) {
                              simd.data()};
   const DiskCoverageBatch bc{x0.data(), y0.data(), w0.data(), x1.data(), y1.data(), w1.data(),
                              scalar.data()};
-  diskCoverage(bs, size_t(n), true);
-  diskCoverageScalar(bc, size_t(n));
+  kernel(bs, size_t(n), true);
+  scalar_kernel(bc, size_t(n));
   for (int k = 0; k < n; ++k) ASSERT_EQ(simd[k], scalar[k]) << "pair " << k;
 }
+
+INSTANTIATE_TEST_SUITE_P(CoverageArea, FloatKernels,
+                         ::testing::Values(LightOutline::Disk, LightOutline::Square),
+                         [](const auto& param_info) {
+                           return param_info.param == LightOutline::Disk ? "Disk" : "Square";
+                         });
 
 // The frame projects a 3D edge from a point onto each light shape. Against the definition in
 // 3D: sample the light (a grid over the disk or rectangle itself, or the sphere's tangent disk)

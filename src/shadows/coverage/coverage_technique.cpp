@@ -37,6 +37,7 @@
 #include "shadows/coverage/coverage_table.h"
 #include "shadows/coverage/disk_coverage_kernel.h"
 #include "shadows/coverage/shape_coverage.h"
+#include "shadows/coverage/square_coverage_kernel.h"
 #include "shadows/exact/edge_bins.h"
 #include "shadows/exact/edge_screen_test.h"
 #include "shadows/exact/potential_edges.h"
@@ -182,7 +183,6 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
     const int tile = 1 << bins.level;
     std::vector<TileWork> tile_work(tiles);
-    const bool disk_kernel = table == nullptr && light.shape != LightShape::Rectangle;
     parallelFor(tiles, [&](size_t index) {
       thread_local std::unique_ptr<Scratch> scratch_slot;
       if (!scratch_slot) scratch_slot = std::make_unique<Scratch>();
@@ -257,19 +257,20 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
         const size_t n = s.batch.size();
         PairBatch& b = s.batch;
         b.fraction.resize(n);
-        if (n > 0 && disk_kernel) {
-          diskCoverage(DiskCoverageBatch{b.x0.data(), b.y0.data(), b.w0.data(), b.x1.data(),
-                                         b.y1.data(), b.w1.data(), b.fraction.data()},
-                       n, context.simd);
-        } else if (n > 0) {
-          // The rectangle's polygon clipping and the table lookups: scalar, in double, the same
-          // in both modes.
-          const LightOutline outline = s.frames[b.pixel[0]].outline;
+        const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(), b.x1.data(),
+                                      b.y1.data(), b.w1.data(), b.fraction.data()};
+        if (n == 0) {
+          // no pair: the hard value (and the own plane) stand
+        } else if (table != nullptr) {
+          // The table lookups: scalar, in double, the same in both modes.
           for (size_t k = 0; k < n; ++k) {
-            const dvec3 pa(b.x0[k], b.y0[k], b.w0[k]), pb(b.x1[k], b.y1[k], b.w1[k]);
-            b.fraction[k] = table ? table->lookup(pa, pb, options_.table)
-                                  : float(beyondFractionHomogeneous(outline, pa, pb));
+            b.fraction[k] = table->lookup(dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                          dvec3(b.x1[k], b.y1[k], b.w1[k]), options_.table);
           }
+        } else if (light.shape == LightShape::Rectangle) {
+          squareCoverage(batch, n, context.simd);
+        } else {
+          diskCoverage(batch, n, context.simd);
         }
         // In pair order: the sums do not depend on threads or SIMD.
         for (size_t k = 0; k < n; ++k) {
