@@ -263,3 +263,34 @@ TEST(LightShapes, SceneFilesReadShapesAndRefuseBadOnes) {
 
 }  // namespace
 }  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// Scenes built in code are checked too (Scene::finalize): a disk with a zero normal, a skewed
+// rectangle, or a rectangle whose radius is not its half diagonal is refused, naming the light.
+TEST(LightShapes, FinalizeChecksShapes) {
+  const auto finalizeWith = [](const Light& light) {
+    Scene scene = builtinScene("spheres");
+    scene.lights = {light};
+    scene.finalize();
+  };
+  const vec3 c(0.0f, 5.0f, 0.0f);
+  EXPECT_NO_THROW(finalizeWith(diskLight(c, vec3(0, -1, 0), 0.5f)));
+  EXPECT_NO_THROW(finalizeWith(rectangleLight(c, vec3(1, 0, 0), vec3(0, 0, 2))));
+  Light bad_disk = diskLight(c, vec3(0, -1, 0), 0.5f);
+  bad_disk.normal = vec3(0.0f);
+  Light skewed = rectangleLight(c, vec3(1, 0, 0), vec3(1, 0, 1));
+  Light wrong_radius = rectangleLight(c, vec3(1, 0, 0), vec3(0, 0, 2));
+  wrong_radius.radius = 0.3f;
+  const std::pair<Light, std::string> bad[] = {
+      {bad_disk, "normal"}, {skewed, "orthogonal"}, {wrong_radius, "half its diagonal"}};
+  for (const auto& [light, expected] : bad) {
+    const std::string message = test::errorMessage([&] { finalizeWith(light); });
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    EXPECT_NE(message.find("light 0"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace penumbra
