@@ -51,6 +51,12 @@ namespace {
 // buffer's own (edge_bins.h). Terms are 0 at the boundary, so a miss there costs nothing.
 constexpr double kRegionMarginFootprints = 0.5;
 
+// One facing casts, for open meshes too (silhouette.h, SolidWithHoles): with two-sided casters
+// a ray from the light crosses an open surface's front and back sheets, each sheet's edges add
+// the light they cover, and a penumbra reads 1 - 2 c, black in its inner half, as the wedges'
+// does (their section 8). Pass 1 takes the same policy, so its quads are still the edges'.
+constexpr CasterPolicy kCoveragePolicy = CasterPolicy::SolidWithHoles;
+
 struct CoverageEdges {
   PotentialEdges regions;        // end points; no triangles (no per-point silhouette test)
   std::vector<int32_t> weight;   // the silhouette multiplicity, as the quad's stencil weight
@@ -63,7 +69,7 @@ CoverageEdges silhouetteEdgesFromCentre(const Scene& scene, const Light& light,
   CoverageEdges out;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const CasterVolume volume = casterVolume(scene, m, eye, light.center, view, VolumeMode::Auto,
-                                             CasterPolicy::Auto);
+                                             kCoveragePolicy);
     const Mesh& mesh = scene.meshes[m];
     for (const SilhouetteEdge& e : volume.silhouette.edges) {
       out.regions.edges.push_back(
@@ -150,6 +156,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   stencil_options.simd = context.simd;
   // A point light: pass 1 alone, the hard shadow volume bit for bit.
   if (!(light.radius > 0.0f)) return hardShadowVolumes(scene_, light, view, eye, stencil_options);
+  stencil_options.policy = kCoveragePolicy;
   const CoverageTableData* table = nullptr;
   TechniqueResult result;
   Stats& stats = result.stats;
