@@ -5,6 +5,8 @@
 //   wedge-3pass, wedge-1pass: the 2004 restructured algorithm, full z-min/z-max culling, the
 //     default 16x16 culling tiles, at 640x427 (the papers' size) and 1920x1080; -tile8: 8x8;
 //     -one-level: 16x16 without the two-level stencil (the papers' umbra pass).
+//   coverage, heckbert-herf: the 2003 coverage soft shadow volumes and the average of 16 hard
+//     volumes, defaults, at both sizes.
 //   reference-64: the Embree oracle at 64 rays per pixel over the sphere light, 640x427.
 // The claim "the full soft-shadow frame is at least 50x faster than the oracle at 64 rays" is the
 // ratio of the reference-64 frame time to a wedge frame time of the same run
@@ -80,6 +82,12 @@ bool registerWedgeBenchmarks() {
     o.two_level_stencil = false;
     cases.push_back({id + "-one-level", 640, 427, wedge, 0.3});
     cases.push_back({id + "-one-level", 1920, 1080, wedge, 0.3});
+  }
+  // The coverage soft shadow volumes (2003; exact per-edge coverage) and Heckbert-Herf (16 hard
+  // volumes averaged), defaults, on the same frames: their ratio to wedge-3pass of the same run.
+  for (const char* name : {"coverage", "heckbert-herf"}) {
+    cases.push_back({name, 640, 427, TechniqueConfig(name), 0.3});
+    cases.push_back({name, 1920, 1080, TechniqueConfig(name), 0.3});
   }
   TechniqueConfig oracle("reference");
   oracle.options<ReferenceOptions>().rays = 64;

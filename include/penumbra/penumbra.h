@@ -48,7 +48,9 @@
 #include <penumbra/scene/mesh.h>
 #include <penumbra/scene/scene.h>
 #include <penumbra/scene/scene_file.h>
+#include <penumbra/shadows/coverage_options.h>
 #include <penumbra/shadows/exact_options.h>
+#include <penumbra/shadows/heckbert_herf_options.h>
 #include <penumbra/shadows/reference_options.h>
 #include <penumbra/shadows/shadow_map_options.h>
 #include <penumbra/shadows/technique.h>

@@ -79,6 +79,11 @@ void Scene::finalize() {
                    label, i);
     PENUMBRA_CHECK(std::isfinite(l.intensity) && l.intensity >= 0.0f,
                    "{}: light {}: intensity {} must be finite and >= 0", label, i, l.intensity);
+    try {
+      checkLightShape(l);  // a disk's normal, a rectangle's edges (light.h)
+    } catch (const Error& e) {
+      throw Error(fmt::format("{}: light {}: {}", label, i, e.what()));
+    }
   }
 
   PENUMBRA_CHECK(settings.width > 0 && settings.height > 0 && settings.width <= 8192 &&

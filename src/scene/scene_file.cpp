@@ -1,5 +1,6 @@
 #include "scene/scene_file.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -64,16 +65,75 @@ void checkLightRadius(const JsonReader& reader, const Scene& scene, const Light&
   }
 }
 
+// "shape": "sphere" (default), "disk" with a "normal", or "rectangle" with edge vectors "u"
+// and "v" (its size: a rectangle takes no "radius"). Keys of another shape are refused, so a
+// forgotten "shape" does not silently make a sphere of a rectangle.
+void readLightShape(const JsonReader& reader, const Json& entry, const std::string& path,
+                    Light& light) {
+  const std::string shape_path = JsonReader::child(path, "shape");
+  const std::string shape =
+      entry.contains("shape") ? reader.string(entry["shape"], shape_path) : "sphere";
+  const auto refuse = [&](const char* key, const char* why) {
+    if (entry.contains(key)) reader.fail(JsonReader::child(path, key), why);
+  };
+  if (shape == "sphere") {
+    refuse("normal", "only a disk light takes a normal (set \"shape\": \"disk\")");
+    refuse("u", "only a rectangle light takes edges u and v (set \"shape\": \"rectangle\")");
+    refuse("v", "only a rectangle light takes edges u and v (set \"shape\": \"rectangle\")");
+    return;
+  }
+  if (shape == "disk") {
+    refuse("u", "a disk light takes a radius and a normal, not edges u and v");
+    refuse("v", "a disk light takes a radius and a normal, not edges u and v");
+    const std::string normal_path = JsonReader::child(path, "normal");
+    const vec3 normal = reader.vector3(reader.required(entry, path, "normal"), normal_path);
+    const float length = glm::length(normal);
+    if (!(length > 0.0f) || !std::isfinite(length)) {
+      reader.fail(normal_path, "must be a non-zero finite vector");
+    }
+    light.shape = LightShape::Disk;
+    light.normal = normal / length;
+    return;
+  }
+  if (shape == "rectangle") {
+    refuse("radius", "a rectangle light's size is its edges u and v; it takes no radius");
+    refuse("normal", "a rectangle light's plane is that of its edges u and v; it takes no normal");
+    const vec3 u = reader.vector3(reader.required(entry, path, "u"), JsonReader::child(path, "u"));
+    const vec3 v = reader.vector3(reader.required(entry, path, "v"), JsonReader::child(path, "v"));
+    const double lu = glm::length(dvec3(u)), lv = glm::length(dvec3(v));
+    if (!(lu > 0.0) || !std::isfinite(lu)) {
+      reader.fail(JsonReader::child(path, "u"), "must be a non-zero finite vector");
+    }
+    if (!(lv > 0.0) || !std::isfinite(lv)) {
+      reader.fail(JsonReader::child(path, "v"), "must be a non-zero finite vector");
+    }
+    if (std::abs(glm::dot(dvec3(u), dvec3(v))) > 1e-4 * lu * lv) {
+      reader.fail(JsonReader::child(path, "v"), "must be orthogonal to u (a rectangle's edges)");
+    }
+    const Light rectangle = rectangleLight(light.center, u, v);
+    light.shape = rectangle.shape;
+    light.edge_u = rectangle.edge_u;
+    light.edge_v = rectangle.edge_v;
+    light.radius = rectangle.radius;
+    return;
+  }
+  reader.fail(shape_path,
+              fmt::format("unknown light shape \"{}\" (sphere, disk or rectangle)", shape));
+}
+
 void readLights(const JsonReader& reader, const Json& value, Scene& scene) {
   reader.expectArray(value, "lights");
   if (value.empty()) reader.fail("lights", "needs at least one light");
   for (size_t i = 0; i < value.size(); ++i) {
     const std::string path = JsonReader::element("lights", i);
     const Json& entry = value[i];
-    reader.expectObject(entry, path, {"center", "radius", "color", "intensity"});
+    reader.expectObject(entry, path,
+                        {"center", "radius", "color", "intensity", "shape", "normal", "u", "v"});
     Light light;
     light.center = reader.vector3(reader.required(entry, path, "center"), JsonReader::child(path, "center"));
-    light.radius = reader.number(entry, path, "radius", 0.0f);
+    readLightShape(reader, entry, path, light);
+    light.radius = light.shape == LightShape::Rectangle ? light.radius
+                                                        : reader.number(entry, path, "radius", 0.0f);
     if (light.radius < 0.0f) {
       reader.fail(JsonReader::child(path, "radius"), fmt::format("must be >= 0 (got {})", light.radius));
     }

@@ -2,7 +2,9 @@
 // names it. Order is the order of `penumbra techniques` and of the conformance suite.
 #include "shadows/technique_table.h"
 
+#include "shadows/coverage/coverage_technique.h"
 #include "shadows/exact/exact_technique.h"
+#include "shadows/heckbert_herf/heckbert_herf_technique.h"
 #include "shadows/mask/mask_technique.h"
 #include "shadows/pcss/pcss_technique.h"
 #include "shadows/reference/reference_technique.h"
@@ -18,7 +20,9 @@ std::vector<TechniqueInfo> builtinTechniques() {
       wedgeTechnique(WedgeAlgorithm::ThreePass),
       wedgeTechnique(WedgeAlgorithm::SinglePass),
       wedgeTechnique(WedgeAlgorithm::Original2002),
+      coverageTechnique(),
       exactTechnique(),
+      heckbertHerfTechnique(),
       maskTechnique(MaskChannel::Alpha),
       maskTechnique(MaskChannel::Colour),
       shadowMapTechnique(),

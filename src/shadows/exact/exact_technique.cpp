@@ -162,6 +162,7 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
 TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
                                          const EyeBuffers& eye,
                                          const RenderContext& context) const {
+  requireSphereLight(light, "exact");
   PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
   PENUMBRA_CHECK(std::isfinite(light.radius) && light.radius >= 0.0f,
                  "light radius {} must be a finite number >= 0", light.radius);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "scene/light.h"
 
 namespace penumbra {
 namespace {
@@ -118,5 +119,26 @@ void stratifiedSamples(int n, uint64_t seed, uint32_t x, uint32_t y, vec2* out) 
 }
 
 void fixedSamples(int n, uint64_t seed, vec2* out) { stratifiedSamples(n, seed, 0, 0, out); }
+
+void planeBasis(const dvec3& n, dvec3& tangent, dvec3& bitangent) {
+  const double sign = std::copysign(1.0, n.z);
+  const double a = -1.0 / (sign + n.z);
+  const double b = n.x * n.y * a;
+  tangent = dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  bitangent = dvec3(b, sign + n.y * n.y * a, -n.y);
+}
+
+dvec3 planarLightPoint(const Light& light, vec2 u) {
+  const dvec3 c(light.center);
+  if (light.shape == LightShape::Rectangle) {
+    return c + (double(u.x) - 0.5) * dvec3(light.edge_u) + (double(u.y) - 0.5) * dvec3(light.edge_v);
+  }
+  PENUMBRA_DCHECK(light.shape == LightShape::Disk);
+  dvec3 t, b;
+  planeBasis(glm::normalize(dvec3(light.normal)), t, b);
+  const DiskPoint d = concentricDisk(u);
+  const double r = double(light.radius) * double(d.radius);
+  return c + r * (double(d.cos_phi) * t + double(d.sin_phi) * b);
+}
 
 }  // namespace penumbra

@@ -80,4 +80,12 @@ void stratifiedSamples(int n, uint64_t seed, uint32_t x, uint32_t y, vec2* out);
 // the exact soft shadow volumes: pixel (0, 0)'s stratified set for `seed`.
 void fixedSamples(int n, uint64_t seed, vec2* out);
 
+// A point of a disk or rectangle light (light.h) for a point of [0, 1)^2, uniform in area: the
+// concentric map onto a disk, the square stretched onto a rectangle. Square strata become
+// strata of equal area. (Spheres are sampled by direction, sampleSphereCone.)
+struct Light;
+dvec3 planarLightPoint(const Light& light, vec2 u);
+// An orthonormal basis (tangent, bitangent) of the plane with unit normal n (Duff et al. 2017).
+void planeBasis(const dvec3& n, dvec3& tangent, dvec3& bitangent);
+
 }  // namespace penumbra

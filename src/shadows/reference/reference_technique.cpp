@@ -61,6 +61,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
   PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
   PENUMBRA_CHECK(std::isfinite(light.radius) && light.radius >= 0.0f,
                  "light radius {} must be a finite number >= 0", light.radius);
+  checkLightShape(light);
   const int width = eye.depth.width();
   const int height = eye.depth.height();
   PENUMBRA_CHECK(width == view.width && height == view.height,
@@ -88,6 +89,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
   const int n = hard ? 1 : options.rays;
   const dvec3 center(light.center);
   const double radius = light.radius;
+  const bool planar = light.shape != LightShape::Sphere;
   std::vector<RowCounters> row_counters(static_cast<size_t>(height));
   ProgressBar progress("reference", uint64_t(height), context.show_progress);
 
@@ -139,18 +141,31 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
       ++counters.z_reads;
       const RayStart start =
           origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive);
-      // A point inside the light sees all of it.
-      if (glm::length(center - start.origin) <= radius) continue;
-      const SphereCone cone = makeSphereCone(start.origin, center, radius);
       if (!fixed) stratifiedSamples(n, options.seed, uint32_t(x), uint32_t(y), samples.data());
       const vec3 origin(start.origin);
       size_t traced = 0;
-      for (int k = 0; k < n; ++k) {
-        const ConeSample s = sampleSphereCone(cone, concentricDisk(samples[size_t(k)]));
-        if (start.intoSurface(start.origin + dvec3(s.direction) * double(s.distance))) {
-          continue;  // blocked by the surface itself
+      if (planar) {
+        // Disk and rectangle lights: rays to points uniform in the light's area (light.h:
+        // visibility is the fraction of the area seen).
+        for (int k = 0; k < n; ++k) {
+          const dvec3 target = planarLightPoint(light, samples[size_t(k)]);
+          const dvec3 to_target = target - start.origin;
+          const double distance = glm::length(to_target);
+          if (!(distance > 0.0)) continue;  // the point is on the light: nothing in between
+          if (start.intoSurface(target)) continue;
+          rays[traced++] = makeRay(origin, vec3(to_target / distance), distance);
         }
-        rays[traced++] = makeRay(origin, s.direction, s.distance);
+      } else {
+        // A point inside the light sees all of it.
+        if (glm::length(center - start.origin) <= radius) continue;
+        const SphereCone cone = makeSphereCone(start.origin, center, radius);
+        for (int k = 0; k < n; ++k) {
+          const ConeSample s = sampleSphereCone(cone, concentricDisk(samples[size_t(k)]));
+          if (start.intoSurface(start.origin + dvec3(s.direction) * double(s.distance))) {
+            continue;  // blocked by the surface itself
+          }
+          rays[traced++] = makeRay(origin, s.direction, s.distance);
+        }
       }
       bvh->occluded(rays.data(), traced, context.simd, blocked.data());
       int unblocked = 0;
@@ -176,7 +191,7 @@ TechniqueInfo referenceTechnique() {
   info.name = "reference";
   info.aliases = {"oracle"};
   info.summary = "the ray-traced oracle (Embree): one ray to the light centre, or N stratified "
-                 "rays over the spherical light";
+                 "rays over the light (sphere, disk or rectangle)";
   info.traits.soft = true;
   info.traits.ray_traced = true;
   // Its own sampling noise against 1024 rays, at the default 256 rays.

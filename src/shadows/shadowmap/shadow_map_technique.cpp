@@ -41,6 +41,7 @@ class ShadowMap final : public PreparedTechnique {
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override {
+    requireSphereLight(light, "shadow-map");
     TechniqueResult result;
     Stats& stats = result.stats;
     LightFrustums frustums = chooseLightFrustums(scene_, light, view, eye, options_.projection,

@@ -354,6 +354,7 @@ class PenumbraWedges final : public PreparedTechnique {
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override {
+    requireSphereLight(light, wedgeTechniqueName(algorithm_));
     WedgeLi wedges = renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context);
     TechniqueResult result;
     result.stats = std::move(wedges.stats);

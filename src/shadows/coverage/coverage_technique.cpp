@@ -1,0 +1,377 @@
+// Coverage soft shadow volumes (2003; Funk 2004, sections 2.1-2.1.3). For a visible point p:
+//   visibility pass 1: V = 1 where the hard shadow volume from the light centre leaves p lit,
+//     else 0 (shadow_stencil.h: the same silhouette and quads as `volume`);
+//   visibility pass 2: for every silhouette edge e whose region of influence holds p, add
+//     sign_e * c_e(p), c_e the fraction of the light that e's hard quad covers seen from p
+//     (shape_coverage.h), signed by the side of the quad's plane p is on; clamp V to [0, 1].
+// Why it adds up: seen from p, project the silhouette onto the light's plane; with the light
+// centre c as origin, Green's theorem splits the covered area into one cone from c per
+// silhouette edge. The cone over an edge, cut at the edge, is the triangle (c, a', b') on the
+// near side and the projected hard quad on the far side; summed over the closed silhouette the
+// cones cover the light once for every time the silhouette winds around c, which is the hard
+// shadow at p, and the triangles cover exactly the occluded part. So
+//   occluded = |L| [p in the hard shadow] - sum_e (signed area of the quad's part in L),
+// and a quad covers nothing of L unless the edge's projection meets L (L is convex and holds
+// c), which happens only inside the edge's region: the two planes through the edge tangent to
+// the light's bounding sphere and one plane at each end (exact/edge_bins.h, the 2003 wedge as
+// a conservative bound; a region need not fit its neighbours', unlike the 2002 wedges whose
+// side planes are shared). Each edge's term is continuous and 0 on its region's boundary, so
+// tile culling and the quick reject only ever skip zeros.
+//
+// Pass 1 and pass 2 take their edges from one silhouette (casterVolume, the light centre): the
+// quads that jump the hard shadow are exactly the edges whose terms jump back (Funk, section
+// 4.2: the thin line along the hard shadow boundary came from two descriptions of the quads).
+#include "shadows/coverage/coverage_technique.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "core/parallel.h"
+#include "core/timer.h"
+#include "shadows/caster_volume.h"
+#include "shadows/coverage/coverage_frame.h"
+#include "shadows/coverage/coverage_table.h"
+#include "shadows/coverage/disk_coverage_kernel.h"
+#include "shadows/coverage/shape_coverage.h"
+#include "shadows/coverage/square_coverage_kernel.h"
+#include "shadows/exact/edge_bins.h"
+#include "shadows/exact/edge_screen_test.h"
+#include "shadows/exact/potential_edges.h"
+#include "shadows/facing_away.h"
+#include "shadows/volume/shadow_stencil.h"
+
+namespace penumbra {
+namespace {
+
+// The region planes' margin, in pixel footprints: only rounding, since the point is the depth
+// buffer's own (edge_bins.h). Terms are 0 at the boundary, so a miss there costs nothing.
+constexpr double kRegionMarginFootprints = 0.5;
+
+// One facing casts, for open meshes too (silhouette.h, SolidWithHoles): with two-sided casters
+// a ray from the light crosses an open surface's front and back sheets, each sheet's edges add
+// the light they cover, and a penumbra reads 1 - 2 c, black in its inner half, as the wedges'
+// does (their section 8). Pass 1 takes the same policy, so its quads are still the edges'.
+constexpr CasterPolicy kCoveragePolicy = CasterPolicy::SolidWithHoles;
+
+struct CoverageEdges {
+  PotentialEdges regions;        // end points; no triangles (no per-point silhouette test)
+  std::vector<int32_t> weight;   // the silhouette multiplicity, as the quad's stencil weight
+};
+
+// Every silhouette edge of every mesh, seen from the light centre exactly as the stencil pass
+// sees it (same casterVolume call as shadowStencil).
+CoverageEdges silhouetteEdgesFromCentre(const Scene& scene, const Light& light,
+                                        const View& view, const EyeBuffers& eye) {
+  CoverageEdges out;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const CasterVolume volume = casterVolume(scene, m, eye, light.center, view, VolumeMode::Auto,
+                                             kCoveragePolicy);
+    const Mesh& mesh = scene.meshes[m];
+    for (const SilhouetteEdge& e : volume.silhouette.edges) {
+      out.regions.edges.push_back(
+          PotentialEdge{dvec3(mesh.positions[e.v0]), dvec3(mesh.positions[e.v1]), 0, 0});
+      out.weight.push_back(e.multiplicity);
+    }
+  }
+  return out;
+}
+
+struct TileWork {
+  uint64_t reads = 0, tests = 0, pairs = 0, inside = 0;
+};
+
+// One block's (pixel, edge) pairs for the kernel, structure of arrays.
+struct PairBatch {
+  std::vector<float> x0, y0, w0, x1, y1, w1, fraction;
+  std::vector<int32_t> weight;
+  std::vector<uint8_t> pixel;
+  size_t size() const { return pixel.size(); }
+  void clear() {
+    for (auto* v : {&x0, &y0, &w0, &x1, &y1, &w1}) v->clear();
+    weight.clear();
+    pixel.clear();
+  }
+  void add(const dvec3& a, const dvec3& b, int32_t w, int i) {
+    x0.push_back(float(a.x));
+    y0.push_back(float(a.y));
+    w0.push_back(float(a.z));
+    x1.push_back(float(b.x));
+    y1.push_back(float(b.y));
+    w1.push_back(float(b.z));
+    weight.push_back(w);
+    pixel.push_back(uint8_t(i));
+  }
+};
+
+struct Scratch {
+  PixelBlock block;
+  CoverageFrame frames[kBlockPixels];
+  bool framed[kBlockPixels];
+  int px[kBlockPixels], py[kBlockPixels];
+  float sum[kBlockPixels];
+  float own_plane[kBlockPixels];
+  float hard[kBlockPixels];  // 1 - the stencil's count of volumes holding the point  // fraction of the light in front of the visible triangle
+  PairBatch batch;
+  std::vector<dvec3> a, b;  // an edge's end points in each pixel's frame (double, rectangle)
+};
+
+class CoverageShadows final : public PreparedTechnique {
+ public:
+  CoverageShadows(const CoverageOptions& options, const Scene& scene)
+      : options_(options), scene_(scene) {}
+
+  TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
+                         const RenderContext& context) const override;
+
+ private:
+  CoverageOptions options_;
+  const Scene& scene_;
+  mutable CoverageTableCache tables_;
+};
+
+// Unit normal of triangle `id`'s plane, on the side the eye sees (zero for a degenerate one).
+dvec3 triangleNormalTowardEye(const Scene& scene, uint32_t id, const View& view) {
+  const auto [m, t] = scene.locateTriangle(id);
+  const Mesh& mesh = scene.meshes[m];
+  const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
+  const dvec3 n = glm::cross(b - a, c - a);
+  const double length = glm::length(n);
+  if (!(length > 0.0)) return dvec3(0.0);
+  return (glm::dot(n, dvec3(view.eye) - a) < 0.0 ? -n : n) / length;
+}
+
+TechniqueResult CoverageShadows::render(const Light& light, const View& view,
+                                        const EyeBuffers& eye,
+                                        const RenderContext& context) const {
+  checkLightShape(light);
+  const int width = eye.depth.width(), height = eye.depth.height();
+  PENUMBRA_CHECK(width == view.width && height == view.height,
+                 "eye buffers are {}x{} but the view is {}x{}", width, height, view.width,
+                 view.height);
+  ShadowStencilOptions stencil_options;
+  stencil_options.simd = context.simd;
+  // A point light: pass 1 alone, the hard shadow volume bit for bit.
+  if (!(light.radius > 0.0f)) return hardShadowVolumes(scene_, light, view, eye, stencil_options);
+  stencil_options.policy = kCoveragePolicy;
+  const CoverageTableData* table = nullptr;
+  TechniqueResult result;
+  Stats& stats = result.stats;
+  const Image<int32_t> stencil =
+      shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
+  CoverageEdges edges;
+  {
+    PassTimer timer(stats, "edges");
+    edges = silhouetteEdgesFromCentre(scene_, light, view, eye);
+    stats.wedges += edges.weight.size();
+  }
+  if (options_.table != CoverageTable::Analytic) {
+    PassTimer timer(stats, "table");
+    table = &tables_.get(light, options_.table_size);
+  }
+  EdgeBins bins;
+  {
+    PassTimer timer(stats, "binning");
+    // The regions of the light's bounding sphere (light.h: radius bounds every shape).
+    Light bound = light;
+    bound.shape = LightShape::Sphere;
+    bins = binEdges(edges.regions, bound, view, eye.depth, options_.tile_level,
+                    kRegionMarginFootprints);
+    stats.tiles_tested += bins.tiles_tested;
+    stats.tiles_culled += bins.tiles_culled;
+  }
+  Image<float> soft(width, height, 1.0f);
+  {
+    PassTimer timer(stats, "coverage");
+    const FacingAway away(scene_, light, view);
+    const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
+    const int tile = 1 << bins.level;
+    std::vector<TileWork> tile_work(tiles);
+    parallelFor(tiles, [&](size_t index) {
+      thread_local std::unique_ptr<Scratch> scratch_slot;
+      if (!scratch_slot) scratch_slot = std::make_unique<Scratch>();
+      Scratch& s = *scratch_slot;
+      TileWork& work = tile_work[index];
+      const int tx = int(index % size_t(bins.columns)), ty = int(index / size_t(bins.columns));
+      const uint32_t* begin = bins.edges.data() + bins.begin[index];
+      const uint32_t* end = bins.edges.data() + bins.begin[index + 1];
+      const int x0 = tx * tile, x1 = std::min(width, x0 + tile);
+      const int y0 = ty * tile, y1 = std::min(height, y0 + tile);
+      int x = x0, y = y0;
+      while (y < y1) {
+        PixelBlock& block = s.block;
+        block.active = 0;
+        int used = 0;
+        for (; y < y1 && used < kBlockPixels; x = (x + 1 < x1) ? x + 1 : x0, y += (x == x0)) {
+          const int i = used++;
+          s.px[i] = x;
+          s.py[i] = y;
+          block.sx[i] = float(x) + 0.5f;
+          block.sy[i] = float(y) + 0.5f;
+          block.z[i] = eye.depth.depth.at(x, y);
+          const int32_t count = stencil.at(x, y);
+          soft.at(x, y) = count == 0 ? 1.0f : 0.0f;
+          s.hard[i] = 1.0f - float(count);
+          const uint32_t id = eye.primitive.at(x, y);
+          if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
+          block.active |= uint64_t(1) << i;
+          s.framed[i] = false;
+          s.sum[i] = 0.0f;
+          s.own_plane[i] = 1.0f;
+          // The visible triangle's plane cuts the light: the part behind it is blocked by the
+          // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is).
+          if (!away.clearOfLight(id)) {
+            s.framed[i] = true;
+            ++work.reads;
+            const dvec3 p = view.unproject(x, y, block.z[i]);
+            if (coverageFrame(light, p, s.frames[i])) {
+              const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
+              if (normal != dvec3(0.0))
+                s.own_plane[i] = float(frontOfPlaneFraction(s.frames[i], normal));
+            } else {
+              block.active &= ~(uint64_t(1) << i);
+            }
+          }
+        }
+        for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
+        if (block.active == 0) continue;
+        uint64_t framed_ok = block.active;
+        s.batch.clear();
+        for (const uint32_t* it = begin; it != end; ++it) {
+          work.tests += uint64_t(__builtin_popcountll(block.active));
+          uint64_t candidates = edgeCandidates(bins.tests[*it], block, context.simd) & framed_ok;
+          const PotentialEdge& e = edges.regions.edges[*it];
+          while (candidates != 0) {
+            const int i = __builtin_ctzll(candidates);
+            candidates &= candidates - 1;
+            CoverageFrame& f = s.frames[i];
+            if (!s.framed[i]) {
+              s.framed[i] = true;
+              ++work.reads;
+              const dvec3 p = view.unproject(s.px[i], s.py[i], block.z[i]);
+              if (!coverageFrame(light, p, f)) {
+                framed_ok &= ~(uint64_t(1) << i);
+                continue;
+              }
+            }
+            ++work.pairs;
+            s.batch.add(f.homogeneous(e.a), f.homogeneous(e.b), edges.weight[*it], i);
+          }
+        }
+        const size_t n = s.batch.size();
+        PairBatch& b = s.batch;
+        b.fraction.resize(n);
+        const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(), b.x1.data(),
+                                      b.y1.data(), b.w1.data(), b.fraction.data()};
+        if (n == 0) {
+          // no pair: the hard value (and the own plane) stand
+        } else if (table != nullptr) {
+          // The table lookups: scalar, in double, the same in both modes.
+          for (size_t k = 0; k < n; ++k) {
+            b.fraction[k] = table->lookup(dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                          dvec3(b.x1[k], b.y1[k], b.w1[k]), options_.table);
+          }
+        } else if (light.shape == LightShape::Rectangle) {
+          squareCoverage(batch, n, context.simd);
+        } else {
+          diskCoverage(batch, n, context.simd);
+        }
+        // In pair order: the sums do not depend on threads or SIMD.
+        for (size_t k = 0; k < n; ++k) {
+          if (b.fraction[k] != 0.0f) ++work.inside;
+          s.sum[b.pixel[k]] += float(b.weight[k]) * b.fraction[k];
+        }
+        for (uint64_t active = framed_ok; active != 0; active &= active - 1) {
+          const int i = __builtin_ctzll(active);
+          if (!s.framed[i]) continue;
+          float& v = soft.at(s.px[i], s.py[i]);
+          v = std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), s.own_plane[i]);
+        }
+      }
+    });
+    for (const TileWork& w : tile_work) {
+      stats.z_reads += w.reads;
+      stats.penumbra_tests += w.pairs;
+      stats.penumbra_inside += w.inside;
+    }
+  }
+  {
+    PassTimer timer(stats, "resolve");
+    resolveVisibility(scene_, light, view, eye, result.visibility,
+                      [&](int x, int y) { return soft.at(x, y); });
+  }
+  return result;
+}
+
+}  // namespace
+
+std::string coverageTableName(CoverageTable table) {
+  switch (table) {
+    case CoverageTable::Analytic:
+      return "analytic";
+    case CoverageTable::Nearest:
+      return "nearest";
+    case CoverageTable::Quadlinear:
+      return "quadlinear";
+  }
+  return "unknown";
+}
+
+TechniqueInfo coverageTechnique() {
+  TechniqueInfo info;
+  info.name = "coverage";
+  info.aliases = {"ssv-2003"};
+  info.summary = "coverage soft shadow volumes (2003 / Funk 2004): hard volume from the centre, "
+                 "plus each silhouette edge's exact covered fraction of a sphere, disk or "
+                 "rectangle light";
+  info.traits.soft = true;
+  // Against the 1024-ray oracle at the conformance size: covered 0.0001-0.0079, penumbra
+  // 0.0028-0.0529, the worst on year2002 whose occluders' penumbrae overlap (the edges' terms
+  // add up, too dark there, as the wedges' do: 2002 paper, section 8). Bounds: about 1.5x.
+  info.traits.covered_mae_bound = 0.012;
+  info.traits.penumbra_mae_bound = 0.08;
+  info.options =
+      OptionTableBuilder<CoverageOptions>()
+          .choice("coverage-table",
+                  "per-edge coverage: exact area (analytic), or the paper's 4D coverage table "
+                  "with nearest or quadlinear lookup",
+                  &CoverageOptions::table,
+                  {{"analytic", CoverageTable::Analytic},
+                   {"nearest", CoverageTable::Nearest},
+                   {"quadlinear", CoverageTable::Quadlinear}})
+          .integer("coverage-table-size",
+                   "entries per table parameter (n^4 entries; the paper's 32: 1024 x 1024)",
+                   &CoverageOptions::table_size, kMinCoverageTableSize, kMaxCoverageTableSize)
+          .integer(
+              "tile-size", "edge binning tile size in pixels, a power of two in 4..64", 4, 64,
+              [](CoverageOptions& o, int64_t v) {
+                PENUMBRA_CHECK((v & (v - 1)) == 0, "--tile-size {} is not a power of two", v);
+                int level = 0;
+                while ((1 << level) < v) ++level;
+                o.tile_level = level;
+              },
+              [](const CoverageOptions& o) { return int64_t(1) << o.tile_level; })
+          .check([](const CoverageOptions& o) {
+            PENUMBRA_CHECK(o.tile_level >= 2 && o.tile_level <= 6,
+                           "coverage: tile level {} is outside 2..6 (4 to 64 pixels)",
+                           o.tile_level);
+          })
+          .describe([](const CoverageOptions& o) {
+            return o.table == CoverageTable::Analytic
+                       ? fmt::format("analytic, {}x{} tiles", 1 << o.tile_level,
+                                     1 << o.tile_level)
+                       : fmt::format("{} table {}^4, {}x{} tiles", coverageTableName(o.table),
+                                     o.table_size, 1 << o.tile_level, 1 << o.tile_level);
+          })
+          .build();
+  info.prepare = [](const std::any& options, const Scene& scene) {
+    return std::make_unique<CoverageShadows>(std::any_cast<const CoverageOptions&>(options),
+                                             scene);
+  };
+  return info;
+}
+
+}  // namespace penumbra
