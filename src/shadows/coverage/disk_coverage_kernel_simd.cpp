@@ -4,6 +4,8 @@
 // harmless divisor. Lanes past the last whole vector take the scalar twin.
 #include "shadows/coverage/disk_coverage_kernel.h"
 
+#include "core/simd_dispatch.h"
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -107,7 +109,7 @@ HWY_EXPORT(DiskCoverageSimd);
 
 void diskCoverage(const DiskCoverageBatch& batch, size_t n, bool simd) {
   size_t done = 0;
-  if (simd) HWY_DYNAMIC_DISPATCH(DiskCoverageSimd)(batch, n, &done);
+  if (useSimd(simd)) HWY_DYNAMIC_DISPATCH(DiskCoverageSimd)(batch, n, &done);
   for (size_t i = done; i < n; ++i) {
     batch.fraction[i] = diskCoverageOne(batch.x0[i], batch.y0[i], batch.w0[i], batch.x1[i],
                                         batch.y1[i], batch.w1[i]);

@@ -3,6 +3,8 @@
 // branches become lane masks. Lanes past the last whole vector take the scalar twin.
 #include "shadows/coverage/square_coverage_kernel.h"
 
+#include "core/simd_dispatch.h"
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -118,7 +120,7 @@ HWY_EXPORT(SquareCoverageSimd);
 
 void squareCoverage(const DiskCoverageBatch& batch, size_t n, bool simd) {
   size_t done = 0;
-  if (simd) HWY_DYNAMIC_DISPATCH(SquareCoverageSimd)(batch, n, &done);
+  if (useSimd(simd)) HWY_DYNAMIC_DISPATCH(SquareCoverageSimd)(batch, n, &done);
   for (size_t i = done; i < n; ++i) {
     batch.fraction[i] = squareCoverageOne(batch.x0[i], batch.y0[i], batch.w0[i], batch.x1[i],
                                           batch.y1[i], batch.w1[i]);

@@ -5,6 +5,8 @@
 // 32-bit lanes for the blend and narrowed back.
 #include "shadows/mask/mask_kernel.h"
 
+#include "core/simd_dispatch.h"
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -112,7 +114,7 @@ HWY_EXPORT(MaskKernelSimd);
 
 void maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule, const MaskTarget& target,
                 KernelCounts& counts, bool simd) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(MaskKernelSimd)(e, blend, rule, target, counts);
   } else {
     maskKernelScalar(e, blend, rule, target, counts);

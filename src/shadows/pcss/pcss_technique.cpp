@@ -36,6 +36,8 @@ class Pcss final : public PreparedTechnique {
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override {
+    // Its blocker search and filter widths come from a sphere's radius (Fernando 2005).
+    requireSphereLight(light, "pcss");
     TechniqueResult result;
     Stats& stats = result.stats;
     const LightDepthMaps maps = drawLightDepthMaps(
