@@ -21,6 +21,9 @@ struct CoverageOptions {
   // Edges are binned to square tiles of 2^tile_level pixels and culled against each tile's
   // z-min/z-max (2004 paper, section 4); 3 is 8x8.
   int tile_level = 3;
+  // Open meshes that face the light both ways also cast their other facing in a second pass,
+  // the darker visibility kept (as WedgeOptions::other_facing_pass): rays through their holes.
+  bool other_facing_pass = true;
 };
 
 }  // namespace penumbra

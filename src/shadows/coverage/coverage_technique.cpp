@@ -64,12 +64,15 @@ struct CoverageEdges {
 
 // Every silhouette edge of every mesh, seen from the light centre exactly as the stencil pass
 // sees it (same casterVolume call as shadowStencil).
+// `casts`: per mesh, whether it casts (null: every mesh), as ShadowStencilOptions.
 CoverageEdges silhouetteEdgesFromCentre(const Scene& scene, const Light& light,
-                                        const View& view, const EyeBuffers& eye) {
+                                        const View& view, const EyeBuffers& eye,
+                                        CasterPolicy policy, const std::vector<uint8_t>* casts) {
   CoverageEdges out;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    const CasterVolume volume = casterVolume(scene, m, eye, light.center, view, VolumeMode::Auto,
-                                             kCoveragePolicy);
+    if (casts != nullptr && !(*casts)[m]) continue;
+    const CasterVolume volume =
+        casterVolume(scene, m, eye, light.center, view, VolumeMode::Auto, policy);
     const Mesh& mesh = scene.meshes[m];
     for (const SilhouetteEdge& e : volume.silhouette.edges) {
       out.regions.edges.push_back(
@@ -156,147 +159,163 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   stencil_options.simd = context.simd;
   // A point light: pass 1 alone, the hard shadow volume bit for bit.
   if (!(light.radius > 0.0f)) return hardShadowVolumes(scene_, light, view, eye, stencil_options);
-  stencil_options.policy = kCoveragePolicy;
   const CoverageTableData* table = nullptr;
   TechniqueResult result;
   Stats& stats = result.stats;
-  const Image<int32_t> stencil =
-      shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
-  CoverageEdges edges;
-  {
-    PassTimer timer(stats, "edges");
-    edges = silhouetteEdgesFromCentre(scene_, light, view, eye);
-    stats.wedges += edges.weight.size();
-  }
   if (options_.table != CoverageTable::Analytic) {
     PassTimer timer(stats, "table");
     table = &tables_.get(light, options_.table_size);
   }
-  EdgeBins bins;
-  {
-    PassTimer timer(stats, "binning");
-    // The regions of the light's bounding sphere (light.h: radius bounds every shape).
-    Light bound = light;
-    bound.shape = LightShape::Sphere;
-    bins = binEdges(edges.regions, bound, view, eye.depth, options_.tile_level,
-                    kRegionMarginFootprints);
-    stats.tiles_tested += bins.tiles_tested;
-    stats.tiles_culled += bins.tiles_culled;
-  }
-  Image<float> soft(width, height, 1.0f);
-  {
-    PassTimer timer(stats, "coverage");
-    const FacingAway away(scene_, light, view);
-    const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
-    const int tile = 1 << bins.level;
-    std::vector<TileWork> tile_work(tiles);
-    parallelFor(tiles, [&](size_t index) {
-      thread_local std::unique_ptr<Scratch> scratch_slot;
-      if (!scratch_slot) scratch_slot = std::make_unique<Scratch>();
-      Scratch& s = *scratch_slot;
-      TileWork& work = tile_work[index];
-      const int tx = int(index % size_t(bins.columns)), ty = int(index / size_t(bins.columns));
-      const uint32_t* begin = bins.edges.data() + bins.begin[index];
-      const uint32_t* end = bins.edges.data() + bins.begin[index + 1];
-      const int x0 = tx * tile, x1 = std::min(width, x0 + tile);
-      const int y0 = ty * tile, y1 = std::min(height, y0 + tile);
-      int x = x0, y = y0;
-      while (y < y1) {
-        PixelBlock& block = s.block;
-        block.active = 0;
-        int used = 0;
-        for (; y < y1 && used < kBlockPixels; x = (x + 1 < x1) ? x + 1 : x0, y += (x == x0)) {
-          const int i = used++;
-          s.px[i] = x;
-          s.py[i] = y;
-          block.sx[i] = float(x) + 0.5f;
-          block.sy[i] = float(y) + 0.5f;
-          block.z[i] = eye.depth.depth.at(x, y);
-          const int32_t count = stencil.at(x, y);
-          soft.at(x, y) = count == 0 ? 1.0f : 0.0f;
-          s.hard[i] = 1.0f - float(count);
-          const uint32_t id = eye.primitive.at(x, y);
-          if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
-          block.active |= uint64_t(1) << i;
-          s.framed[i] = false;
-          s.sum[i] = 0.0f;
-          s.own_plane[i] = 1.0f;
-          // The visible triangle's plane cuts the light: the part behind it is blocked by the
-          // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is).
-          if (!away.clearOfLight(id)) {
-            s.framed[i] = true;
-            ++work.reads;
-            const dvec3 p = view.unproject(x, y, block.z[i]);
-            if (coverageFrame(light, p, s.frames[i])) {
-              const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
-              if (normal != dvec3(0.0))
-                s.own_plane[i] = float(frontOfPlaneFraction(s.frames[i], normal));
-            } else {
-              block.active &= ~(uint64_t(1) << i);
-            }
-          }
-        }
-        for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
-        if (block.active == 0) continue;
-        uint64_t framed_ok = block.active;
-        s.batch.clear();
-        for (const uint32_t* it = begin; it != end; ++it) {
-          work.tests += uint64_t(__builtin_popcountll(block.active));
-          uint64_t candidates = edgeCandidates(bins.tests[*it], block, context.simd) & framed_ok;
-          const PotentialEdge& e = edges.regions.edges[*it];
-          while (candidates != 0) {
-            const int i = __builtin_ctzll(candidates);
-            candidates &= candidates - 1;
-            CoverageFrame& f = s.frames[i];
-            if (!s.framed[i]) {
+  // Both passes below with one silhouette: `policy` for the casters, `casts` for which meshes.
+  auto coveragePass = [&](CasterPolicy policy, const std::vector<uint8_t>* casts) {
+    stencil_options.policy = policy;
+    stencil_options.casting_meshes = casts;
+    const Image<int32_t> stencil =
+        shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
+    CoverageEdges edges;
+    {
+      PassTimer timer(stats, "edges");
+      edges = silhouetteEdgesFromCentre(scene_, light, view, eye, policy, casts);
+      stats.wedges += edges.weight.size();
+    }
+    EdgeBins bins;
+    {
+      PassTimer timer(stats, "binning");
+      // The regions of the light's bounding sphere (light.h: radius bounds every shape).
+      Light bound = light;
+      bound.shape = LightShape::Sphere;
+      bins = binEdges(edges.regions, bound, view, eye.depth, options_.tile_level,
+                      kRegionMarginFootprints);
+      stats.tiles_tested += bins.tiles_tested;
+      stats.tiles_culled += bins.tiles_culled;
+    }
+    Image<float> soft(width, height, 1.0f);
+    {
+      PassTimer timer(stats, "coverage");
+      const FacingAway away(scene_, light, view);
+      const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
+      const int tile = 1 << bins.level;
+      std::vector<TileWork> tile_work(tiles);
+      parallelFor(tiles, [&](size_t index) {
+        thread_local std::unique_ptr<Scratch> scratch_slot;
+        if (!scratch_slot) scratch_slot = std::make_unique<Scratch>();
+        Scratch& s = *scratch_slot;
+        TileWork& work = tile_work[index];
+        const int tx = int(index % size_t(bins.columns)), ty = int(index / size_t(bins.columns));
+        const uint32_t* begin = bins.edges.data() + bins.begin[index];
+        const uint32_t* end = bins.edges.data() + bins.begin[index + 1];
+        const int x0 = tx * tile, x1 = std::min(width, x0 + tile);
+        const int y0 = ty * tile, y1 = std::min(height, y0 + tile);
+        int x = x0, y = y0;
+        while (y < y1) {
+          PixelBlock& block = s.block;
+          block.active = 0;
+          int used = 0;
+          for (; y < y1 && used < kBlockPixels; x = (x + 1 < x1) ? x + 1 : x0, y += (x == x0)) {
+            const int i = used++;
+            s.px[i] = x;
+            s.py[i] = y;
+            block.sx[i] = float(x) + 0.5f;
+            block.sy[i] = float(y) + 0.5f;
+            block.z[i] = eye.depth.depth.at(x, y);
+            const int32_t count = stencil.at(x, y);
+            soft.at(x, y) = count == 0 ? 1.0f : 0.0f;
+            s.hard[i] = 1.0f - float(count);
+            const uint32_t id = eye.primitive.at(x, y);
+            if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
+            block.active |= uint64_t(1) << i;
+            s.framed[i] = false;
+            s.sum[i] = 0.0f;
+            s.own_plane[i] = 1.0f;
+            // The visible triangle's plane cuts the light: the part behind it is blocked by the
+            // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is).
+            if (!away.clearOfLight(id)) {
               s.framed[i] = true;
               ++work.reads;
-              const dvec3 p = view.unproject(s.px[i], s.py[i], block.z[i]);
-              if (!coverageFrame(light, p, f)) {
-                framed_ok &= ~(uint64_t(1) << i);
-                continue;
+              const dvec3 p = view.unproject(x, y, block.z[i]);
+              if (coverageFrame(light, p, s.frames[i])) {
+                const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
+                if (normal != dvec3(0.0))
+                  s.own_plane[i] = float(frontOfPlaneFraction(s.frames[i], normal));
+              } else {
+                block.active &= ~(uint64_t(1) << i);
               }
             }
-            ++work.pairs;
-            s.batch.add(f.homogeneous(e.a), f.homogeneous(e.b), edges.weight[*it], i);
           }
-        }
-        const size_t n = s.batch.size();
-        PairBatch& b = s.batch;
-        b.fraction.resize(n);
-        const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(), b.x1.data(),
-                                      b.y1.data(), b.w1.data(), b.fraction.data()};
-        if (n == 0) {
-          // no pair: the hard value (and the own plane) stand
-        } else if (table != nullptr) {
-          // The table lookups: scalar, in double, the same in both modes.
+          for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
+          if (block.active == 0) continue;
+          uint64_t framed_ok = block.active;
+          s.batch.clear();
+          for (const uint32_t* it = begin; it != end; ++it) {
+            work.tests += uint64_t(__builtin_popcountll(block.active));
+            uint64_t candidates = edgeCandidates(bins.tests[*it], block, context.simd) & framed_ok;
+            const PotentialEdge& e = edges.regions.edges[*it];
+            while (candidates != 0) {
+              const int i = __builtin_ctzll(candidates);
+              candidates &= candidates - 1;
+              CoverageFrame& f = s.frames[i];
+              if (!s.framed[i]) {
+                s.framed[i] = true;
+                ++work.reads;
+                const dvec3 p = view.unproject(s.px[i], s.py[i], block.z[i]);
+                if (!coverageFrame(light, p, f)) {
+                  framed_ok &= ~(uint64_t(1) << i);
+                  continue;
+                }
+              }
+              ++work.pairs;
+              s.batch.add(f.homogeneous(e.a), f.homogeneous(e.b), edges.weight[*it], i);
+            }
+          }
+          const size_t n = s.batch.size();
+          PairBatch& b = s.batch;
+          b.fraction.resize(n);
+          const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(),      b.x1.data(),
+                                        b.y1.data(), b.w1.data(), b.fraction.data()};
+          if (n == 0) {
+            // no pair: the hard value (and the own plane) stand
+          } else if (table != nullptr) {
+            // The table lookups: scalar, in double, the same in both modes.
+            for (size_t k = 0; k < n; ++k) {
+              b.fraction[k] = table->lookup(dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                            dvec3(b.x1[k], b.y1[k], b.w1[k]), options_.table);
+            }
+          } else if (light.shape == LightShape::Rectangle) {
+            squareCoverage(batch, n, context.simd);
+          } else {
+            diskCoverage(batch, n, context.simd);
+          }
+          // In pair order: the sums do not depend on threads or SIMD.
           for (size_t k = 0; k < n; ++k) {
-            b.fraction[k] = table->lookup(dvec3(b.x0[k], b.y0[k], b.w0[k]),
-                                          dvec3(b.x1[k], b.y1[k], b.w1[k]), options_.table);
+            if (b.fraction[k] != 0.0f) ++work.inside;
+            s.sum[b.pixel[k]] += float(b.weight[k]) * b.fraction[k];
           }
-        } else if (light.shape == LightShape::Rectangle) {
-          squareCoverage(batch, n, context.simd);
-        } else {
-          diskCoverage(batch, n, context.simd);
+          for (uint64_t active = framed_ok; active != 0; active &= active - 1) {
+            const int i = __builtin_ctzll(active);
+            if (!s.framed[i]) continue;
+            float& v = soft.at(s.px[i], s.py[i]);
+            v = std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), s.own_plane[i]);
+          }
         }
-        // In pair order: the sums do not depend on threads or SIMD.
-        for (size_t k = 0; k < n; ++k) {
-          if (b.fraction[k] != 0.0f) ++work.inside;
-          s.sum[b.pixel[k]] += float(b.weight[k]) * b.fraction[k];
-        }
-        for (uint64_t active = framed_ok; active != 0; active &= active - 1) {
-          const int i = __builtin_ctzll(active);
-          if (!s.framed[i]) continue;
-          float& v = soft.at(s.px[i], s.py[i]);
-          v = std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), s.own_plane[i]);
-        }
+      });
+      for (const TileWork& w : tile_work) {
+        stats.z_reads += w.reads;
+        stats.penumbra_tests += w.pairs;
+        stats.penumbra_inside += w.inside;
       }
-    });
-    for (const TileWork& w : tile_work) {
-      stats.z_reads += w.reads;
-      stats.penumbra_tests += w.pairs;
-      stats.penumbra_inside += w.inside;
     }
+    return soft;
+  };
+  Image<float> soft = coveragePass(kCoveragePolicy, nullptr);
+  // Open meshes cast one facing, and a ray through a hole (a terrain's border under a low
+  // light) misses it: the other facing of those meshes, in a pass of its own, counts those
+  // rays, and the darker visibility is kept, as the wedges do (wedge_technique.cpp).
+  if (options_.other_facing_pass && anyOpenMeshWithBothFacings(scene_, light.center)) {
+    std::vector<uint8_t> casts(scene_.meshes.size());
+    for (size_t m = 0; m < casts.size(); ++m)
+      casts[m] = openMeshWithBothFacings(scene_.meshes[m], scene_.adjacency[m], light.center);
+    const Image<float> other = coveragePass(CasterPolicy::SolidWithHolesOtherFacing, &casts);
+    for (size_t i = 0; i < soft.size(); ++i) soft[i] = std::min(soft[i], other[i]);
   }
   {
     PassTimer timer(stats, "resolve");
@@ -354,17 +373,22 @@ TechniqueInfo coverageTechnique() {
                 o.tile_level = level;
               },
               [](const CoverageOptions& o) { return int64_t(1) << o.tile_level; })
+          .flag("one-facing",
+                "open meshes cast one facing only (faster where an open mesh faces the light "
+                "both ways, but light passes through its holes)",
+                &CoverageOptions::other_facing_pass, false)
           .check([](const CoverageOptions& o) {
             PENUMBRA_CHECK(o.tile_level >= 2 && o.tile_level <= 6,
                            "coverage: tile level {} is outside 2..6 (4 to 64 pixels)",
                            o.tile_level);
           })
           .describe([](const CoverageOptions& o) {
-            return o.table == CoverageTable::Analytic
-                       ? fmt::format("analytic, {}x{} tiles", 1 << o.tile_level,
-                                     1 << o.tile_level)
-                       : fmt::format("{} table {}^4, {}x{} tiles", coverageTableName(o.table),
-                                     o.table_size, 1 << o.tile_level, 1 << o.tile_level);
+            return (o.table == CoverageTable::Analytic
+                        ? fmt::format("analytic, {}x{} tiles", 1 << o.tile_level,
+                                      1 << o.tile_level)
+                        : fmt::format("{} table {}^4, {}x{} tiles", coverageTableName(o.table),
+                                      o.table_size, 1 << o.tile_level, 1 << o.tile_level)) +
+                   (o.other_facing_pass ? "" : ", one facing");
           })
           .build();
   info.prepare = [](const std::any& options, const Scene& scene) {

@@ -72,6 +72,7 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
   {
     PassTimer timer(stats, "silhouette");
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
+      if (options.casting_meshes != nullptr && !(*options.casting_meshes)[m]) continue;
       CasterVolume volume =
           casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
       stats.silhouette_edges += volume.silhouette.edges.size();

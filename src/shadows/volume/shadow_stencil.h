@@ -4,6 +4,9 @@
 // Shared by the hard volumes (`volume`), which test it against zero, and the exact soft shadow
 // volumes (`exact`), which take it with two-sided casters as the number of triangles the segment
 // from the light centre to the point crosses (silhouette.h).
+#include <cstdint>
+#include <vector>
+
 #include "core/image.h"
 #include "core/stats.h"
 #include "core/view.h"
@@ -24,6 +27,9 @@ struct ShadowStencilOptions {
   // the light centre from the eye's side (shadow_stencil.cpp says why). The hard volumes and
   // the wedges keep the depth test (their images are compared bit for bit); exact needs it.
   bool skip_own_quads = false;
+  // Per mesh, whether it casts (null: every mesh): the soft techniques' second pass over the
+  // open meshes' other facing draws only those meshes (silhouette.h).
+  const std::vector<uint8_t>* casting_meshes = nullptr;
 };
 
 // Fills the passes "silhouette" and "volumes" of `stats` and its counters.
