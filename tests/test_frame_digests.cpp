@@ -253,14 +253,18 @@ double meanField(const json& light) {
   return mean.is_number() ? mean.get<double>() : std::numeric_limits<double>::quiet_NaN();
 }
 
-// Differences between two counter objects, by name, in the union of both names.
+// Differences between two counter objects, by name, in the union of both names. A counter the
+// golden file lacks compares as 0: one added to Stats after the recording (alias-free's
+// light_samples) is 0 in every configuration recorded, and must stay 0 there.
 void compareCounters(const std::string& where, const json& expected, const json& actual,
                      std::vector<std::string>& out) {
+  static const json kZero = 0;
   std::set<std::string> names;
   for (const auto& [name, value] : expected.items()) names.insert(name);
   for (const auto& [name, value] : actual.items()) names.insert(name);
   for (const std::string& name : names) {
-    const json& e = field(expected, name);
+    const bool recorded = expected.is_object() && expected.contains(name);
+    const json& e = recorded || !actual.contains(name) ? field(expected, name) : kZero;
     const json& a = field(actual, name);
     if (e != a) {
       out.push_back(fmt::format("{}: counter {} expected {} actual {}", where, name,

@@ -2,6 +2,7 @@
 // names it. Order is the order of `penumbra techniques` and of the conformance suite.
 #include "shadows/technique_table.h"
 
+#include "shadows/aliasfree/alias_free_technique.h"
 #include "shadows/exact/exact_technique.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/shadowmap/shadow_map_technique.h"
@@ -18,6 +19,7 @@ std::vector<TechniqueInfo> builtinTechniques() {
       wedgeTechnique(WedgeAlgorithm::Original2002),
       exactTechnique(),
       shadowMapTechnique(),
+      aliasFreeTechnique(),
       referenceTechnique(),
   };
 }

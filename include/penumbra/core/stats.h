@@ -24,6 +24,8 @@ namespace penumbra {
   X(wedges, "penumbra wedges built")                                                             \
   X(triangles, "triangles set up for rasterization (after clipping)")                            \
   X(rays, "oracle shadow rays (incl. ones its surface blocks untraced)")                         \
+  X(light_samples, "eye samples placed in the light's irregular z-buffer (alias-free)")          \
+  X(sample_tests, "(occluder triangle, light-space sample) pairs tested (alias-free)")           \
   /* Pixels whose depth point was tested against a wedge, and of those the ones truly inside */  \
   /* it. Their ratio is the distance from perfect culling (2004 paper, section 4). */            \
   X(penumbra_tests, "pixels whose point was tested against a wedge")                             \

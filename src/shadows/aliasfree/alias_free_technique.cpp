@@ -1,0 +1,314 @@
+// The alias-free shadow map (Aila & Laine, "Alias-Free Shadow Maps", EGSR 2004: publication P5
+// of Aila's 2005 thesis, section 4.1), in our terms (docs/alias-free-shadow-maps.md):
+//
+// 1. Samples. Every covered pixel's shaded point is the oracle's: RayOrigins::start puts the
+//    depth-buffer point back on its visible triangle and lifts it off toward the eye, and the
+//    float ray origin the oracle traces from is the sample (ray_origin.h). As in the oracle, a
+//    point whose own surface faces away from the light centre is in shadow without a test
+//    (RayStart::intoSurface), and a point at the light centre is lit.
+// 2. The irregular z-buffer. Samples, relative to the light centre, are projected onto the
+//    light's image plane (one frustum, or six cube faces: light_grids.h) and binned into
+//    light-space tiles, stored tile by tile in blocks of kOccluderBlock for the SIMD kernel.
+// 3. Binning the occluders. Every scene triangle is clipped to each grid's frustum; the tiles
+//    its projected bounds cover are its candidates (P5 section 3 rasterizes conservatively over
+//    the tiles). A (triangle, tile) pair is culled when the triangle's nearest point to the
+//    light is farther than every sample of the tile: it cannot lie between the light and any
+//    of them (the light-space analogue of z-max culling).
+// 4. Tests. Per tile, every triangle binned to it is tested against the tile's samples, exactly
+//    and in 3D (occluder_test.h): the sample is in shadow when the segment from the light centre
+//    to it crosses the triangle. Tiles are independent work items (no two share a sample), and
+//    the result of a sample is the OR over triangles, so output and counters are the same for
+//    any thread count; the kernel is SIMD with a scalar twin.
+//
+// There is no bias: the visible triangle cannot shadow its own sample from the light's side,
+// because the sample is lifted off it toward the eye (a light on the other side is decided by
+// intoSurface), and neighbours across its edges are tested like any triangle against the same
+// point the oracle traces from.
+//
+// Counters: z_reads, one depth read per covered pixel (as the oracle); light_samples, the
+// samples in the irregular z-buffer; triangles, occluders set up and binned to some grid;
+// tiles_tested and tiles_culled, (triangle, light-space tile) pairs for tiles holding samples
+// and those culled by distance; sample_tests, (triangle, sample) pairs tested.
+#include "shadows/aliasfree/alias_free_technique.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "core/parallel.h"
+#include "core/timer.h"
+#include "shadows/aliasfree/light_grids.h"
+#include "shadows/aliasfree/occluder_test.h"
+#include "shadows/reference/ray_origin.h"
+
+namespace penumbra {
+namespace {
+
+constexpr uint32_t kNoSample = 0xffffffffu;
+constexpr size_t kTrianglesPerChunk = 1024;
+
+// A triangle is culled from a tile when its nearest point is farther from the light than the
+// tile's farthest sample by more than this relative margin (distances are rounded in double).
+constexpr double kCullMargin = 1e-9;
+
+struct alignas(kOccluderSampleAlignment) DoubleBlock {
+  double v[kOccluderBlock];
+};
+struct alignas(kOccluderSampleAlignment) FlagBlock {
+  int64_t v[kOccluderBlock];
+};
+
+struct Occluder {
+  OccluderTest test;
+  double nearest = 0.0;  // distance from the light centre to the triangle's nearest point
+  bool valid = false;
+};
+
+struct BinnedTriangle {
+  uint32_t triangle;
+  uint32_t grid;
+  TileRange range;
+};
+
+class AliasFree final : public PreparedTechnique {
+ public:
+  AliasFree(const AliasFreeOptions& options, const Scene& scene)
+      : options_(options), scene_(scene) {
+    for (const Mesh& mesh : scene.meshes) triangle_count_ += mesh.triangleCount();
+  }
+  TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
+                         const RenderContext& context) const override;
+
+ private:
+  AliasFreeOptions options_;
+  const Scene& scene_;
+  size_t triangle_count_ = 0;
+};
+
+TechniqueResult AliasFree::render(const Light& light, const View& view, const EyeBuffers& eye,
+                                  const RenderContext& context) const {
+  PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
+  const int width = eye.depth.width();
+  const int height = eye.depth.height();
+  PENUMBRA_CHECK(width == view.width && height == view.height,
+                 "eye buffers are {}x{} but the view is {}x{}", width, height, view.width,
+                 view.height);
+  PENUMBRA_CHECK(eye.primitive.width() == width && eye.primitive.height() == height,
+                 "eye primitive ids are {}x{} but the depth buffer is {}x{}",
+                 eye.primitive.width(), eye.primitive.height(), width, height);
+  const RayOrigins origins(scene_, view);
+  for (size_t i = 0; i < eye.primitive.size(); ++i) {
+    const uint32_t id = eye.primitive[i];
+    PENUMBRA_CHECK(id == kNoPrimitive || id < origins.triangleCount(),
+                   "eye pixel {} names triangle {} but the scene has {} triangles", i, id,
+                   origins.triangleCount());
+  }
+
+  TechniqueResult result;
+  result.visibility.resize(width, height, 1.0f);
+  Stats& stats = result.stats;
+  const dvec3 centre(light.center);
+
+  // 1. Samples, row by row, then in row order.
+  std::vector<dvec3> d;               // sample minus light centre
+  std::vector<uint32_t> sample_pixel;  // y * width + x
+  {
+    PassTimer timer(stats, "samples");
+    std::vector<std::vector<dvec3>> row_d(static_cast<size_t>(height));
+    std::vector<std::vector<uint32_t>> row_x(static_cast<size_t>(height));
+    std::vector<uint64_t> row_reads(size_t(height), 0);
+    parallelFor(size_t(height), [&](size_t row) {
+      const int y = int(row);
+      const float* depth = eye.depth.depth.row(y);
+      const uint32_t* primitive = eye.primitive.row(y);
+      float* visibility = result.visibility.row(y);
+      for (int x = 0; x < width; ++x) {
+        if (!(depth[x] > 0.0f)) continue;  // background stays lit
+        ++row_reads[row];
+        const RayStart start = origins.start(x, y, depth[x], primitive[x]);
+        if (glm::length(centre - start.origin) == 0.0) continue;  // at the light: lit
+        if (start.intoSurface(centre)) {
+          visibility[x] = 0.0f;
+          continue;
+        }
+        // The oracle traces from the origin rounded to float (reference_technique.cpp).
+        const dvec3 s = dvec3(vec3(start.origin)) - centre;
+        if (s == dvec3(0.0)) continue;
+        row_d[row].push_back(s);
+        row_x[row].push_back(uint32_t(x));
+      }
+    });
+    for (size_t row = 0; row < size_t(height); ++row) {
+      stats.z_reads += row_reads[row];
+      d.insert(d.end(), row_d[row].begin(), row_d[row].end());
+      for (const uint32_t x : row_x[row]) sample_pixel.push_back(uint32_t(row) * uint32_t(width) + x);
+    }
+    stats.light_samples = d.size();
+  }
+  if (d.empty()) return result;
+
+  // 2. The irregular z-buffer: samples tile by tile, each tile padded to whole blocks.
+  const LightGrids grids(d, options_.tile_samples);
+  const size_t tiles = grids.tileCount();
+  std::vector<size_t> tile_block(tiles + 1, 0);  // first block of every tile, then the total
+  std::vector<uint32_t> tile_samples(tiles, 0);
+  std::vector<double> tile_farthest(tiles, 0.0);
+  std::vector<DoubleBlock> x_blocks, y_blocks, z_blocks;
+  std::vector<uint32_t> slot_sample;  // per slot, its sample, or kNoSample for padding
+  {
+    PassTimer timer(stats, "irregular z-buffer");
+    for (size_t i = 0; i < d.size(); ++i) {
+      const size_t t = grids.tileOf(i);
+      ++tile_samples[t];
+      tile_farthest[t] = std::max(tile_farthest[t], glm::length(d[i]));
+    }
+    for (size_t t = 0; t < tiles; ++t) {
+      tile_block[t + 1] = tile_block[t] + (tile_samples[t] + kOccluderBlock - 1) / kOccluderBlock;
+    }
+    const size_t blocks = tile_block[tiles];
+    x_blocks.assign(blocks, DoubleBlock{});
+    y_blocks.assign(blocks, DoubleBlock{});
+    z_blocks.assign(blocks, DoubleBlock{});
+    slot_sample.assign(blocks * kOccluderBlock, kNoSample);
+    std::vector<size_t> fill(tiles);
+    for (size_t t = 0; t < tiles; ++t) fill[t] = tile_block[t] * kOccluderBlock;
+    for (size_t i = 0; i < d.size(); ++i) {
+      const size_t slot = fill[grids.tileOf(i)]++;
+      x_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].x;
+      y_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].y;
+      z_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].z;
+      slot_sample[slot] = uint32_t(i);
+    }
+  }
+
+  // 3. Occluders: set up and clipped to the grids in parallel chunks, then binned to tiles in
+  // triangle order (two passes: count, then fill), so every tile's list is in triangle order.
+  std::vector<Occluder> occluders(triangle_count_);
+  const size_t chunks = (triangle_count_ + kTrianglesPerChunk - 1) / kTrianglesPerChunk;
+  std::vector<std::vector<BinnedTriangle>> binned(chunks);
+  std::vector<size_t> tile_list(tiles + 1, 0);  // first entry of every tile's list, then total
+  std::vector<uint32_t> lists;
+  {
+    PassTimer timer(stats, "binning");
+    std::vector<std::pair<uint32_t, uint32_t>> where;  // (mesh, triangle) of every global id
+    where.reserve(triangle_count_);
+    for (uint32_t m = 0; m < scene_.meshes.size(); ++m)
+      for (uint32_t t = 0; t < scene_.meshes[m].triangleCount(); ++t) where.emplace_back(m, t);
+    std::vector<uint64_t> chunk_triangles(chunks, 0);
+    parallelFor(chunks, [&](size_t chunk) {
+      const size_t end = std::min(triangle_count_, (chunk + 1) * kTrianglesPerChunk);
+      for (size_t id = chunk * kTrianglesPerChunk; id < end; ++id) {
+        const Mesh& mesh = scene_.meshes[where[id].first];
+        const vec3 a = mesh.vertex(where[id].second, 0), b = mesh.vertex(where[id].second, 1),
+                   c = mesh.vertex(where[id].second, 2);
+        const std::optional<OccluderTest> test = makeOccluderTest(a, b, c, light.center);
+        if (!test) continue;
+        Occluder& o = occluders[id];
+        o.test = *test;
+        o.valid = true;
+        const dvec3 pa = dvec3(a) - centre, pb = dvec3(b) - centre, pc = dvec3(c) - centre;
+        o.nearest = glm::length(closestPointOnTriangle(dvec3(0.0), pa, pb, pc));
+        bool any = false;
+        for (size_t g = 0; g < grids.grids().size(); ++g) {
+          TileRange range;
+          if (!grids.tileRange(g, pa, pb, pc, range)) continue;
+          binned[chunk].push_back({uint32_t(id), uint32_t(g), range});
+          any = true;
+        }
+        chunk_triangles[chunk] += any ? 1 : 0;
+      }
+    });
+    for (const uint64_t n : chunk_triangles) stats.triangles += n;
+
+    // Both passes walk the same pairs in the same order; `fill` is false for the count.
+    std::vector<size_t> cursor;  // per tile, the next free entry of its list
+    const auto walk = [&](bool fill) {
+      for (const std::vector<BinnedTriangle>& chunk : binned) {
+        for (const BinnedTriangle& b : chunk) {
+          const LightGrid& g = grids.grids()[b.grid];
+          const double nearest = occluders[b.triangle].nearest;
+          for (int row = b.range.row0; row <= b.range.row1; ++row) {
+            for (int column = b.range.column0; column <= b.range.column1; ++column) {
+              const size_t t = g.first_tile + size_t(row) * size_t(g.columns) + size_t(column);
+              if (tile_samples[t] == 0) continue;
+              const bool culled = nearest > tile_farthest[t] * (1.0 + kCullMargin);
+              if (fill) {
+                if (!culled) lists[cursor[t]++] = b.triangle;
+              } else {
+                ++stats.tiles_tested;
+                if (culled) {
+                  ++stats.tiles_culled;
+                } else {
+                  ++tile_list[t + 1];
+                }
+              }
+            }
+          }
+        }
+      }
+    };
+    walk(false);
+    for (size_t t = 0; t < tiles; ++t) tile_list[t + 1] += tile_list[t];
+    lists.resize(tile_list[tiles]);
+    cursor.assign(tile_list.begin(), tile_list.end() - 1);
+    walk(true);
+  }
+
+  // 4. Tests, tile by tile.
+  std::vector<FlagBlock> shadowed(tile_block[tiles], FlagBlock{});
+  {
+    PassTimer timer(stats, "tests");
+    std::vector<uint64_t> tile_tests(tiles, 0);
+    parallelFor(tiles, [&](size_t t) {
+      const size_t first = tile_block[t], blocks = tile_block[t + 1] - first;
+      if (blocks == 0) return;
+      for (size_t k = tile_list[t]; k < tile_list[t + 1]; ++k) {
+        markShadowedSamples(occluders[lists[k]].test, x_blocks[first].v, y_blocks[first].v,
+                            z_blocks[first].v, shadowed[first].v, blocks * kOccluderBlock,
+                            context.simd);
+      }
+      tile_tests[t] = uint64_t(tile_list[t + 1] - tile_list[t]) * tile_samples[t];
+    });
+    for (const uint64_t n : tile_tests) stats.sample_tests += n;
+    for (size_t slot = 0; slot < slot_sample.size(); ++slot) {
+      const uint32_t i = slot_sample[slot];
+      if (i == kNoSample || shadowed[slot / kOccluderBlock].v[slot % kOccluderBlock] == 0) continue;
+      result.visibility[sample_pixel[i]] = 0.0f;
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+TechniqueInfo aliasFreeTechnique() {
+  TechniqueInfo info;
+  info.name = "alias-free";
+  info.aliases = {"irregular-z-buffer"};
+  info.summary = "alias-free shadow map: occluders tested at the eye samples' exact light-space "
+                 "positions (irregular z-buffer), hard shadows";
+  info.traits.exact = true;
+  // The one-ray oracle's answer but for ties on shadow boundaries (tests/test_alias_free.cpp):
+  // the same bound as the hard shadow volumes'.
+  info.traits.covered_mae_bound = 0.001;
+  info.options =
+      OptionTableBuilder<AliasFreeOptions>()
+          .integer("tile-samples",
+                   "eye samples per light-space tile of the irregular z-buffer, on average",
+                   &AliasFreeOptions::tile_samples, 1, 4096)
+          .describe([](const AliasFreeOptions& o) {
+            return fmt::format("{} samples per light tile", o.tile_samples);
+          })
+          .build();
+  info.prepare = [](const std::any& options, const Scene& scene) {
+    return std::make_unique<AliasFree>(std::any_cast<const AliasFreeOptions&>(options), scene);
+  };
+  return info;
+}
+
+}  // namespace penumbra
