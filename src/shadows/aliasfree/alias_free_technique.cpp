@@ -114,19 +114,21 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
   Stats& stats = result.stats;
   const dvec3 centre(light.center);
 
-  // 1. Samples, row by row, then in row order.
-  std::vector<dvec3> d;               // sample minus light centre
+  // 1. Samples: every pixel's in place, rows in parallel, then packed in row order.
+  std::vector<dvec3> d;                // sample minus light centre
   std::vector<uint32_t> sample_pixel;  // y * width + x
   {
     PassTimer timer(stats, "samples");
-    std::vector<std::vector<dvec3>> row_d(static_cast<size_t>(height));
-    std::vector<std::vector<uint32_t>> row_x(static_cast<size_t>(height));
+    std::vector<dvec3> pixel_d(size_t(width) * size_t(height));
+    std::vector<uint8_t> is_sample(pixel_d.size(), 0);
     std::vector<uint64_t> row_reads(size_t(height), 0);
+    std::vector<size_t> row_first(size_t(height) + 1, 0);
     parallelFor(size_t(height), [&](size_t row) {
       const int y = int(row);
       const float* depth = eye.depth.depth.row(y);
       const uint32_t* primitive = eye.primitive.row(y);
       float* visibility = result.visibility.row(y);
+      const size_t base = row * size_t(width);
       for (int x = 0; x < width; ++x) {
         if (!(depth[x] > 0.0f)) continue;  // background stays lit
         ++row_reads[row];
@@ -139,15 +141,25 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
         // The oracle traces from the origin rounded to float (reference_technique.cpp).
         const dvec3 s = dvec3(vec3(start.origin)) - centre;
         if (s == dvec3(0.0)) continue;
-        row_d[row].push_back(s);
-        row_x[row].push_back(uint32_t(x));
+        pixel_d[base + size_t(x)] = s;
+        is_sample[base + size_t(x)] = 1;
+        ++row_first[row + 1];
       }
     });
     for (size_t row = 0; row < size_t(height); ++row) {
       stats.z_reads += row_reads[row];
-      d.insert(d.end(), row_d[row].begin(), row_d[row].end());
-      for (const uint32_t x : row_x[row]) sample_pixel.push_back(uint32_t(row) * uint32_t(width) + x);
+      row_first[row + 1] += row_first[row];
     }
+    d.resize(row_first[size_t(height)]);
+    sample_pixel.resize(d.size());
+    parallelFor(size_t(height), [&](size_t row) {
+      size_t next = row_first[row];
+      for (size_t i = row * size_t(width); i < (row + 1) * size_t(width); ++i) {
+        if (!is_sample[i]) continue;
+        d[next] = pixel_d[i];
+        sample_pixel[next++] = uint32_t(i);
+      }
+    });
     stats.light_samples = d.size();
   }
   if (d.empty()) return result;

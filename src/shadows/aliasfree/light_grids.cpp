@@ -4,12 +4,17 @@
 #include <array>
 #include <cmath>
 
+#include "core/parallel.h"
+
 namespace penumbra {
 namespace {
 
 // Tiles per grid side at most: 2048^2 tiles is already far more than the samples of a
 // 1920 x 1080 frame at one sample per tile.
 constexpr int kMaxGridSide = 2048;
+
+// Samples per work item of the per-sample loops.
+constexpr size_t kChunk = 8192;
 
 // The sample rectangle grows by this fraction of its larger side (plus kAbsolutePad, in tangent
 // units, for a rectangle of one sample): samples then lie strictly inside the frustum, away
@@ -59,20 +64,30 @@ int tileIndex(double value, double lo, double hi, int count) {
 LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
   sample_tile_.resize(d.size());
   std::vector<uint8_t> grid_of(d.size(), 0);
+  // Per-sample work in fixed chunks, in parallel; sums are added chunk by chunk in order, so
+  // the grids do not depend on the thread count.
+  const size_t chunks = (d.size() + kChunk - 1) / kChunk;
+  const auto chunked = [&](const auto& body) {
+    parallelFor(chunks, [&](size_t chunk) {
+      const size_t end = std::min(d.size(), (chunk + 1) * kChunk);
+      for (size_t i = chunk * kChunk; i < end; ++i) body(chunk, i);
+    });
+  };
 
   // One frustum around the samples' mean direction when they all fit in it.
+  std::vector<dvec3> chunk_sum(chunks, dvec3(0.0));
+  chunked([&](size_t chunk, size_t i) { chunk_sum[chunk] += glm::normalize(d[i]); });
   dvec3 mean(0.0);
-  for (const dvec3& s : d) mean += glm::normalize(s);
+  for (const dvec3& sum : chunk_sum) mean += sum;
   const double cos_limit = std::cos(glm::radians(kSingleFrustumHalfAngleDegrees));
   bool single = !d.empty() && glm::length(mean) > 0.0;
   if (single) {
     mean = glm::normalize(mean);
-    for (const dvec3& s : d) {
-      if (!(glm::dot(s, mean) >= cos_limit * glm::length(s))) {
-        single = false;
-        break;
-      }
-    }
+    std::vector<uint8_t> chunk_outside(chunks, 0);
+    chunked([&](size_t chunk, size_t i) {
+      if (!(glm::dot(d[i], mean) >= cos_limit * glm::length(d[i]))) chunk_outside[chunk] = 1;
+    });
+    single = std::find(chunk_outside.begin(), chunk_outside.end(), 1) == chunk_outside.end();
   }
   if (single) {
     LightGrid g;
@@ -93,21 +108,29 @@ LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
       g.v = f.v;
       grids_.push_back(g);
     }
-    for (size_t i = 0; i < d.size(); ++i) grid_of[i] = uint8_t(majorFace(d[i]));
+    chunked([&](size_t, size_t i) { grid_of[i] = uint8_t(majorFace(d[i])); });
   }
 
   // Each grid spans its samples' bounds, padded; empty grids keep one tile and no samples.
+  const size_t n_grids = grids_.size();
   std::vector<dvec2> uv(d.size());
-  std::vector<dvec2> lo(grids_.size(), dvec2(HUGE_VAL)), hi(grids_.size(), dvec2(-HUGE_VAL));
-  for (size_t i = 0; i < d.size(); ++i) {
-    LightGrid& g = grids_[grid_of[i]];
-    uv[i] = project(g, d[i]);
-    lo[grid_of[i]] = glm::min(lo[grid_of[i]], uv[i]);
-    hi[grid_of[i]] = glm::max(hi[grid_of[i]], uv[i]);
-    ++g.samples;
-  }
-  for (size_t k = 0; k < grids_.size(); ++k) {
+  std::vector<dvec2> lo(chunks * n_grids, dvec2(HUGE_VAL)), hi(chunks * n_grids, dvec2(-HUGE_VAL));
+  std::vector<size_t> count(chunks * n_grids, 0);
+  chunked([&](size_t chunk, size_t i) {
+    const size_t k = chunk * n_grids + grid_of[i];
+    uv[i] = project(grids_[grid_of[i]], d[i]);
+    lo[k] = glm::min(lo[k], uv[i]);
+    hi[k] = glm::max(hi[k], uv[i]);
+    ++count[k];
+  });
+  for (size_t k = 0; k < n_grids; ++k) {
     LightGrid& g = grids_[k];
+    dvec2 low(HUGE_VAL), high(-HUGE_VAL);
+    for (size_t chunk = 0; chunk < chunks; ++chunk) {
+      low = glm::min(low, lo[chunk * n_grids + k]);
+      high = glm::max(high, hi[chunk * n_grids + k]);
+      g.samples += count[chunk * n_grids + k];
+    }
     g.first_tile = tile_count_;
     if (g.samples == 0) {
       g.u0 = g.v0 = -1.0;
@@ -115,11 +138,11 @@ LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
       tile_count_ += 1;
       continue;
     }
-    const double pad = kRelativePad * std::max(hi[k].x - lo[k].x, hi[k].y - lo[k].y) + kAbsolutePad;
-    g.u0 = lo[k].x - pad;
-    g.v0 = lo[k].y - pad;
-    g.u1 = hi[k].x + pad;
-    g.v1 = hi[k].y + pad;
+    const double pad = kRelativePad * std::max(high.x - low.x, high.y - low.y) + kAbsolutePad;
+    g.u0 = low.x - pad;
+    g.v0 = low.y - pad;
+    g.u1 = high.x + pad;
+    g.v1 = high.y + pad;
     // About samples / tile_samples tiles, as square as the rectangle allows.
     const double tiles = std::max(1.0, double(g.samples) / double(tile_samples));
     const double aspect = (g.u1 - g.u0) / (g.v1 - g.v0);
@@ -127,12 +150,12 @@ LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
     g.rows = std::clamp(int(std::lround(tiles / g.columns)), 1, kMaxGridSide);
     tile_count_ += size_t(g.columns) * size_t(g.rows);
   }
-  for (size_t i = 0; i < d.size(); ++i) {
+  chunked([&](size_t, size_t i) {
     const LightGrid& g = grids_[grid_of[i]];
     const int column = tileIndex(uv[i].x, g.u0, g.u1, g.columns);
     const int row = tileIndex(uv[i].y, g.v0, g.v1, g.rows);
     sample_tile_[i] = uint32_t(g.first_tile + size_t(row) * size_t(g.columns) + size_t(column));
-  }
+  });
 }
 
 bool LightGrids::tileRange(size_t k, const dvec3& a, const dvec3& b, const dvec3& c,
