@@ -3,8 +3,10 @@
 // HardTechnique/<scene>/<size>/<technique>: the technique alone (prepared once for the scene),
 // rendering every light on an eye pass rendered once outside the loop, as
 // Technique/columns/640x427/* in frame_bench.cpp does. Techniques: `volume` (auto z-pass /
-// z-fail, exact up to ties), `alias-free` (the irregular z-buffer, exact up to ties) and
-// `shadow-map` at 1024 and 4096 texels per cube face, PCF 1 x 1 (the plain map: approximate).
+// z-fail, exact up to ties), `alias-free` (the irregular z-buffer, exact up to ties), the
+// oracle's one ray per pixel (`reference --hard`: the answer both must give, from the same
+// shaded points) and `shadow-map` at 1024 and 2048 texels per cube face, PCF 1 x 1 (the plain
+// map: approximate).
 //
 // Counters: technique_ms (wall clock per run), <pass>_ms (Stats::time_ms per pass, mean), and
 // the alias-free work counters light_samples, tiles_tested, tiles_culled, sample_tests.
@@ -20,6 +22,7 @@
 
 #include "bench_scenes.h"
 #include "render/eye_pass.h"
+#include "shadows/reference_options.h"
 #include "shadows/shadow_map_options.h"
 #include "shadows/technique.h"
 
@@ -70,7 +73,10 @@ bool registerAliasFreeBenchmarks() {
   };
   std::vector<Case> cases = {{"volume", TechniqueConfig("volume")},
                              {"alias-free", TechniqueConfig("alias-free")}};
-  for (const int texels : {1024, 4096}) {
+  TechniqueConfig oracle("reference");
+  oracle.options<ReferenceOptions>().hard = true;
+  cases.push_back({"reference-hard", oracle});
+  for (const int texels : {1024, 2048}) {
     TechniqueConfig map("shadow-map");
     map.options<ShadowMapOptions>().resolution = texels;
     map.options<ShadowMapOptions>().pcf_kernel = 1;

@@ -35,6 +35,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
@@ -165,19 +166,31 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
   if (d.empty()) return result;
 
   // 2. The irregular z-buffer: samples tile by tile, each tile padded to whole blocks.
-  const LightGrids grids(d, options_.tile_samples);
-  const size_t tiles = grids.tileCount();
-  std::vector<size_t> tile_block(tiles + 1, 0);  // first block of every tile, then the total
-  std::vector<uint32_t> tile_samples(tiles, 0);
-  std::vector<double> tile_farthest(tiles, 0.0);
+  std::optional<LightGrids> grid_storage;
+  size_t tiles = 0;
+  std::vector<size_t> tile_block;  // first block of every tile, then the total
+  std::vector<uint32_t> tile_samples;
+  std::vector<double> tile_farthest;
+  double farthest = 0.0;  // of all samples
   std::vector<DoubleBlock> x_blocks, y_blocks, z_blocks;
   std::vector<uint32_t> slot_sample;  // per slot, its sample, or kNoSample for padding
   {
     PassTimer timer(stats, "irregular z-buffer");
+    grid_storage.emplace(d, options_.tile_samples);
+    tiles = grid_storage->tileCount();
+    tile_block.assign(tiles + 1, 0);
+    tile_samples.assign(tiles, 0);
+    tile_farthest.assign(tiles, 0.0);
+    std::vector<double> distance(d.size());
+    parallelFor((d.size() + 8191) / 8192, [&](size_t chunk) {
+      const size_t end = std::min(d.size(), (chunk + 1) * 8192);
+      for (size_t i = chunk * 8192; i < end; ++i) distance[i] = glm::length(d[i]);
+    });
     for (size_t i = 0; i < d.size(); ++i) {
-      const size_t t = grids.tileOf(i);
+      const size_t t = grid_storage->tileOf(i);
       ++tile_samples[t];
-      tile_farthest[t] = std::max(tile_farthest[t], glm::length(d[i]));
+      tile_farthest[t] = std::max(tile_farthest[t], distance[i]);
+      farthest = std::max(farthest, distance[i]);
     }
     for (size_t t = 0; t < tiles; ++t) {
       tile_block[t + 1] = tile_block[t] + (tile_samples[t] + kOccluderBlock - 1) / kOccluderBlock;
@@ -190,13 +203,15 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     std::vector<size_t> fill(tiles);
     for (size_t t = 0; t < tiles; ++t) fill[t] = tile_block[t] * kOccluderBlock;
     for (size_t i = 0; i < d.size(); ++i) {
-      const size_t slot = fill[grids.tileOf(i)]++;
+      const size_t slot = fill[grid_storage->tileOf(i)]++;
       x_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].x;
       y_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].y;
       z_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].z;
       slot_sample[slot] = uint32_t(i);
     }
   }
+
+  const LightGrids& grids = *grid_storage;
 
   // 3. Occluders: set up and clipped to the grids in parallel chunks, then binned to tiles in
   // triangle order (two passes: count, then fill), so every tile's list is in triangle order.
@@ -225,6 +240,7 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
         o.valid = true;
         const dvec3 pa = dvec3(a) - centre, pb = dvec3(b) - centre, pc = dvec3(c) - centre;
         o.nearest = glm::length(closestPointOnTriangle(dvec3(0.0), pa, pb, pc));
+        if (o.nearest > farthest * (1.0 + kCullMargin)) continue;  // beyond every sample
         bool any = false;
         for (size_t g = 0; g < grids.grids().size(); ++g) {
           TileRange range;
@@ -287,11 +303,17 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
       tile_tests[t] = uint64_t(tile_list[t + 1] - tile_list[t]) * tile_samples[t];
     });
     for (const uint64_t n : tile_tests) stats.sample_tests += n;
-    for (size_t slot = 0; slot < slot_sample.size(); ++slot) {
-      const uint32_t i = slot_sample[slot];
-      if (i == kNoSample || shadowed[slot / kOccluderBlock].v[slot % kOccluderBlock] == 0) continue;
-      result.visibility[sample_pixel[i]] = 0.0f;
-    }
+    // Every sample is one pixel, so tiles write disjoint pixels.
+    parallelFor(tiles, [&](size_t t) {
+      for (size_t slot = tile_block[t] * kOccluderBlock; slot < tile_block[t + 1] * kOccluderBlock;
+           ++slot) {
+        const uint32_t i = slot_sample[slot];
+        if (i == kNoSample || shadowed[slot / kOccluderBlock].v[slot % kOccluderBlock] == 0) {
+          continue;
+        }
+        result.visibility[sample_pixel[i]] = 0.0f;
+      }
+    });
   }
   return result;
 }

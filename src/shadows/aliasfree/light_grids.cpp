@@ -166,10 +166,19 @@ bool LightGrids::tileRange(size_t k, const dvec3& a, const dvec3& b, const dvec3
   // inside. Together they also keep d . axis >= 0 (u0 < u1 and v0 < v1).
   const dvec3 planes[4] = {g.u - g.u0 * g.axis, g.u1 * g.axis - g.u, g.v - g.v0 * g.axis,
                            g.v1 * g.axis - g.v};
+  // A triangle wholly outside one plane misses the frustum; one inside all four needs no
+  // clipping (most triangles: the frustum is fitted to the samples, and the samples to the view).
+  bool inside = true;
+  for (const dvec3& n : planes) {
+    const double fa = glm::dot(a, n), fb = glm::dot(b, n), fc = glm::dot(c, n);
+    if (fa < 0.0 && fb < 0.0 && fc < 0.0) return false;
+    inside = inside && fa >= 0.0 && fb >= 0.0 && fc >= 0.0;
+  }
   // Sutherland-Hodgman: a triangle clipped by four planes keeps at most 7 vertices.
   std::array<dvec3, 8> polygon = {a, b, c}, next;
   int count = 3;
   for (const dvec3& n : planes) {
+    if (inside) break;
     int kept = 0;
     for (int i = 0; i < count; ++i) {
       const dvec3& p = polygon[i];
