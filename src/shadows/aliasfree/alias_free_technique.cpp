@@ -52,6 +52,8 @@ namespace {
 
 constexpr uint32_t kNoSample = 0xffffffffu;
 constexpr size_t kTrianglesPerChunk = 1024;
+constexpr size_t kSamplesPerChunk = 65536;
+constexpr size_t kTilesPerItem = 256;
 
 // A triangle is culled from a tile when its nearest point is farther from the light than the
 // tile's farthest sample by more than this relative margin (distances are rounded in double).
@@ -115,13 +117,15 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
   Stats& stats = result.stats;
   const dvec3 centre(light.center);
 
-  // 1. Samples: every pixel's in place, rows in parallel, then packed in row order.
+  // 1. Samples: every row's packed at the row's start in place, rows in parallel, then all
+  // packed in row order.
   std::vector<dvec3> d;                // sample minus light centre
   std::vector<uint32_t> sample_pixel;  // y * width + x
   {
     PassTimer timer(stats, "samples");
-    std::vector<dvec3> pixel_d(size_t(width) * size_t(height));
-    std::vector<uint8_t> is_sample(pixel_d.size(), 0);
+    const size_t pixels = size_t(width) * size_t(height);
+    const std::unique_ptr<dvec3[]> row_d(new dvec3[pixels]);  // uninitialised: written first
+    const std::unique_ptr<uint32_t[]> row_x(new uint32_t[pixels]);
     std::vector<uint64_t> row_reads(size_t(height), 0);
     std::vector<size_t> row_first(size_t(height) + 1, 0);
     parallelFor(size_t(height), [&](size_t row) {
@@ -130,6 +134,7 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
       const uint32_t* primitive = eye.primitive.row(y);
       float* visibility = result.visibility.row(y);
       const size_t base = row * size_t(width);
+      size_t count = 0;
       for (int x = 0; x < width; ++x) {
         if (!(depth[x] > 0.0f)) continue;  // background stays lit
         ++row_reads[row];
@@ -140,12 +145,12 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
           continue;
         }
         // The oracle traces from the origin rounded to float (reference_technique.cpp).
-        const dvec3 s = dvec3(vec3(start.origin)) - centre;
-        if (s == dvec3(0.0)) continue;
-        pixel_d[base + size_t(x)] = s;
-        is_sample[base + size_t(x)] = 1;
-        ++row_first[row + 1];
+        const dvec3 sample = dvec3(vec3(start.origin)) - centre;
+        if (sample == dvec3(0.0)) continue;
+        row_d[base + count] = sample;
+        row_x[base + count++] = uint32_t(x);
       }
+      row_first[row + 1] = count;
     });
     for (size_t row = 0; row < size_t(height); ++row) {
       stats.z_reads += row_reads[row];
@@ -154,61 +159,94 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     d.resize(row_first[size_t(height)]);
     sample_pixel.resize(d.size());
     parallelFor(size_t(height), [&](size_t row) {
-      size_t next = row_first[row];
-      for (size_t i = row * size_t(width); i < (row + 1) * size_t(width); ++i) {
-        if (!is_sample[i]) continue;
-        d[next] = pixel_d[i];
-        sample_pixel[next++] = uint32_t(i);
+      const size_t base = row * size_t(width);
+      for (size_t k = 0; k < row_first[row + 1] - row_first[row]; ++k) {
+        d[row_first[row] + k] = row_d[base + k];
+        sample_pixel[row_first[row] + k] = uint32_t(base) + row_x[base + k];
       }
     });
     stats.light_samples = d.size();
   }
   if (d.empty()) return result;
 
-  // 2. The irregular z-buffer: samples tile by tile, each tile padded to whole blocks.
+  // 2. The irregular z-buffer: samples tile by tile, each tile padded to whole blocks. A
+  // counting sort in parallel chunks of samples: chunk c's samples of tile t go after those of
+  // chunks before c, so every tile holds its samples in sample order, whatever the threads.
   std::optional<LightGrids> grid_storage;
   size_t tiles = 0;
   std::vector<size_t> tile_block;  // first block of every tile, then the total
   std::vector<uint32_t> tile_samples;
   std::vector<double> tile_farthest;
   double farthest = 0.0;  // of all samples
-  std::vector<DoubleBlock> x_blocks, y_blocks, z_blocks;
-  std::vector<uint32_t> slot_sample;  // per slot, its sample, or kNoSample for padding
+  std::unique_ptr<DoubleBlock[]> x_blocks, y_blocks, z_blocks;
+  std::unique_ptr<uint32_t[]> slot_sample;  // per slot, its sample, or kNoSample for padding
   {
     PassTimer timer(stats, "irregular z-buffer");
     grid_storage.emplace(d, options_.tile_samples);
-    tiles = grid_storage->tileCount();
-    tile_block.assign(tiles + 1, 0);
-    tile_samples.assign(tiles, 0);
-    tile_farthest.assign(tiles, 0.0);
-    std::vector<double> distance(d.size());
-    parallelFor((d.size() + 8191) / 8192, [&](size_t chunk) {
-      const size_t end = std::min(d.size(), (chunk + 1) * 8192);
-      for (size_t i = chunk * 8192; i < end; ++i) distance[i] = glm::length(d[i]);
+    const LightGrids& grids = *grid_storage;
+    tiles = grids.tileCount();
+    const size_t chunks = (d.size() + kSamplesPerChunk - 1) / kSamplesPerChunk;
+    // Per chunk and tile: the chunk's sample count, then its first slot within the tile.
+    std::vector<uint32_t> chunk_tile(chunks * tiles, 0);
+    parallelFor(chunks, [&](size_t c) {
+      const size_t end = std::min(d.size(), (c + 1) * kSamplesPerChunk);
+      for (size_t i = c * kSamplesPerChunk; i < end; ++i) ++chunk_tile[c * tiles + grids.tileOf(i)];
     });
-    for (size_t i = 0; i < d.size(); ++i) {
-      const size_t t = grid_storage->tileOf(i);
-      ++tile_samples[t];
-      tile_farthest[t] = std::max(tile_farthest[t], distance[i]);
-      farthest = std::max(farthest, distance[i]);
-    }
+    tile_samples.assign(tiles, 0);
+    parallelFor((tiles + kTilesPerItem - 1) / kTilesPerItem, [&](size_t item) {
+      const size_t end = std::min(tiles, (item + 1) * kTilesPerItem);
+      for (size_t t = item * kTilesPerItem; t < end; ++t) {
+        uint32_t total = 0;
+        for (size_t c = 0; c < chunks; ++c) {
+          const uint32_t n = chunk_tile[c * tiles + t];
+          chunk_tile[c * tiles + t] = total;
+          total += n;
+        }
+        tile_samples[t] = total;
+      }
+    });
+    tile_block.assign(tiles + 1, 0);
     for (size_t t = 0; t < tiles; ++t) {
       tile_block[t + 1] = tile_block[t] + (tile_samples[t] + kOccluderBlock - 1) / kOccluderBlock;
     }
     const size_t blocks = tile_block[tiles];
-    x_blocks.assign(blocks, DoubleBlock{});
-    y_blocks.assign(blocks, DoubleBlock{});
-    z_blocks.assign(blocks, DoubleBlock{});
-    slot_sample.assign(blocks * kOccluderBlock, kNoSample);
-    std::vector<size_t> fill(tiles);
-    for (size_t t = 0; t < tiles; ++t) fill[t] = tile_block[t] * kOccluderBlock;
-    for (size_t i = 0; i < d.size(); ++i) {
-      const size_t slot = fill[grid_storage->tileOf(i)]++;
-      x_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].x;
-      y_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].y;
-      z_blocks[slot / kOccluderBlock].v[slot % kOccluderBlock] = d[i].z;
-      slot_sample[slot] = uint32_t(i);
-    }
+    // Uninitialised: every slot is written below, by a sample or as padding.
+    x_blocks.reset(new DoubleBlock[blocks]);
+    y_blocks.reset(new DoubleBlock[blocks]);
+    z_blocks.reset(new DoubleBlock[blocks]);
+    slot_sample.reset(new uint32_t[blocks * kOccluderBlock]);
+    double* x = x_blocks[0].v;
+    double* y = y_blocks[0].v;
+    double* z = z_blocks[0].v;
+    parallelFor(chunks, [&](size_t c) {
+      const size_t end = std::min(d.size(), (c + 1) * kSamplesPerChunk);
+      for (size_t i = c * kSamplesPerChunk; i < end; ++i) {
+        const size_t t = grids.tileOf(i);
+        const size_t slot = tile_block[t] * kOccluderBlock + chunk_tile[c * tiles + t]++;
+        x[slot] = d[i].x;
+        y[slot] = d[i].y;
+        z[slot] = d[i].z;
+        slot_sample[slot] = uint32_t(i);
+      }
+    });
+    // Padding (a zero sample, never read back), and the farthest sample of every tile.
+    tile_farthest.assign(tiles, 0.0);
+    parallelFor((tiles + kTilesPerItem - 1) / kTilesPerItem, [&](size_t item) {
+      const size_t end = std::min(tiles, (item + 1) * kTilesPerItem);
+      for (size_t t = item * kTilesPerItem; t < end; ++t) {
+        const size_t first = tile_block[t] * kOccluderBlock;
+        for (size_t slot = first; slot < first + tile_samples[t]; ++slot) {
+          tile_farthest[t] =
+              std::max(tile_farthest[t], glm::length(dvec3(x[slot], y[slot], z[slot])));
+        }
+        for (size_t slot = first + tile_samples[t]; slot < tile_block[t + 1] * kOccluderBlock;
+             ++slot) {
+          x[slot] = y[slot] = z[slot] = 0.0;
+          slot_sample[slot] = kNoSample;
+        }
+      }
+    });
+    for (const double f : tile_farthest) farthest = std::max(farthest, f);
   }
 
   const LightGrids& grids = *grid_storage;
@@ -287,33 +325,26 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     walk(true);
   }
 
-  // 4. Tests, tile by tile.
-  std::vector<FlagBlock> shadowed(tile_block[tiles], FlagBlock{});
+  // 4. Tests, tile by tile. Every sample is one pixel, so tiles write disjoint pixels.
   {
     PassTimer timer(stats, "tests");
     std::vector<uint64_t> tile_tests(tiles, 0);
     parallelFor(tiles, [&](size_t t) {
       const size_t first = tile_block[t], blocks = tile_block[t + 1] - first;
       if (blocks == 0) return;
+      std::vector<FlagBlock> shadowed(blocks, FlagBlock{});
       for (size_t k = tile_list[t]; k < tile_list[t + 1]; ++k) {
         markShadowedSamples(occluders[lists[k]].test, x_blocks[first].v, y_blocks[first].v,
-                            z_blocks[first].v, shadowed[first].v, blocks * kOccluderBlock,
+                            z_blocks[first].v, shadowed[0].v, blocks * kOccluderBlock,
                             context.simd);
       }
       tile_tests[t] = uint64_t(tile_list[t + 1] - tile_list[t]) * tile_samples[t];
-    });
-    for (const uint64_t n : tile_tests) stats.sample_tests += n;
-    // Every sample is one pixel, so tiles write disjoint pixels.
-    parallelFor(tiles, [&](size_t t) {
-      for (size_t slot = tile_block[t] * kOccluderBlock; slot < tile_block[t + 1] * kOccluderBlock;
-           ++slot) {
-        const uint32_t i = slot_sample[slot];
-        if (i == kNoSample || shadowed[slot / kOccluderBlock].v[slot % kOccluderBlock] == 0) {
-          continue;
-        }
-        result.visibility[sample_pixel[i]] = 0.0f;
+      for (size_t slot = 0; slot < tile_samples[t]; ++slot) {
+        if (shadowed[slot / kOccluderBlock].v[slot % kOccluderBlock] == 0) continue;
+        result.visibility[sample_pixel[slot_sample[first * kOccluderBlock + slot]]] = 0.0f;
       }
     });
+    for (const uint64_t n : tile_tests) stats.sample_tests += n;
   }
   return result;
 }
