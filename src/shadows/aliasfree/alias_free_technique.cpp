@@ -248,6 +248,7 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     });
     for (const double f : tile_farthest) farthest = std::max(farthest, f);
   }
+  std::vector<dvec3>().swap(d);  // the blocks hold the samples now
 
   const LightGrids& grids = *grid_storage;
 
