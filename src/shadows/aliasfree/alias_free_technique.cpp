@@ -35,6 +35,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -72,6 +73,21 @@ struct Occluder {
   bool valid = false;
 };
 
+// Buffers of one render, kept by the prepared technique for the next: a frame's samples take
+// tens of megabytes at 1920 x 1080, and fresh allocations that large come from the kernel page
+// by page every frame. Sizes only grow; contents are never carried from one render to the next.
+struct Scratch {
+  std::vector<dvec3> row_d, d;  // samples minus the light centre: per row in place, then packed
+  std::vector<uint32_t> row_x, sample_pixel, chunk_tile, slot_sample;
+  std::vector<DoubleBlock> x, y, z;
+};
+
+template <class T>
+T* atLeast(std::vector<T>& v, size_t n) {
+  if (v.size() < n) v.resize(n);
+  return v.data();
+}
+
 struct BinnedTriangle {
   uint32_t triangle;
   uint32_t grid;
@@ -91,6 +107,9 @@ class AliasFree final : public PreparedTechnique {
   AliasFreeOptions options_;
   const Scene& scene_;
   size_t triangle_count_ = 0;
+  // One render at a time uses the kept buffers; a concurrent one makes its own.
+  mutable std::mutex scratch_mutex_;
+  mutable Scratch scratch_;
 };
 
 TechniqueResult AliasFree::render(const Light& light, const View& view, const EyeBuffers& eye,
@@ -117,15 +136,19 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
   Stats& stats = result.stats;
   const dvec3 centre(light.center);
 
+  std::unique_lock<std::mutex> own_scratch(scratch_mutex_, std::try_to_lock);
+  Scratch local_scratch;
+  Scratch& scratch = own_scratch.owns_lock() ? scratch_ : local_scratch;
+
   // 1. Samples: every row's packed at the row's start in place, rows in parallel, then all
   // packed in row order.
-  std::vector<dvec3> d;                // sample minus light centre
-  std::vector<uint32_t> sample_pixel;  // y * width + x
+  std::vector<dvec3>& d = scratch.d;                   // sample minus light centre
+  std::vector<uint32_t>& sample_pixel = scratch.sample_pixel;  // y * width + x
   {
     PassTimer timer(stats, "samples");
     const size_t pixels = size_t(width) * size_t(height);
-    const std::unique_ptr<dvec3[]> row_d(new dvec3[pixels]);  // uninitialised: written first
-    const std::unique_ptr<uint32_t[]> row_x(new uint32_t[pixels]);
+    dvec3* row_d = atLeast(scratch.row_d, pixels);
+    uint32_t* row_x = atLeast(scratch.row_x, pixels);
     std::vector<uint64_t> row_reads(size_t(height), 0);
     std::vector<size_t> row_first(size_t(height) + 1, 0);
     parallelFor(size_t(height), [&](size_t row) {
@@ -178,8 +201,8 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
   std::vector<uint32_t> tile_samples;
   std::vector<double> tile_farthest;
   double farthest = 0.0;  // of all samples
-  std::unique_ptr<DoubleBlock[]> x_blocks, y_blocks, z_blocks;
-  std::unique_ptr<uint32_t[]> slot_sample;  // per slot, its sample, or kNoSample for padding
+  DoubleBlock *x_blocks = nullptr, *y_blocks = nullptr, *z_blocks = nullptr;
+  uint32_t* slot_sample = nullptr;  // per slot, its sample, or kNoSample for padding
   {
     PassTimer timer(stats, "irregular z-buffer");
     grid_storage.emplace(d, options_.tile_samples);
@@ -187,7 +210,8 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     tiles = grids.tileCount();
     const size_t chunks = (d.size() + kSamplesPerChunk - 1) / kSamplesPerChunk;
     // Per chunk and tile: the chunk's sample count, then its first slot within the tile.
-    std::vector<uint32_t> chunk_tile(chunks * tiles, 0);
+    std::vector<uint32_t>& chunk_tile = scratch.chunk_tile;
+    chunk_tile.assign(chunks * tiles, 0);
     parallelFor(chunks, [&](size_t c) {
       const size_t end = std::min(d.size(), (c + 1) * kSamplesPerChunk);
       for (size_t i = c * kSamplesPerChunk; i < end; ++i) ++chunk_tile[c * tiles + grids.tileOf(i)];
@@ -210,11 +234,11 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
       tile_block[t + 1] = tile_block[t] + (tile_samples[t] + kOccluderBlock - 1) / kOccluderBlock;
     }
     const size_t blocks = tile_block[tiles];
-    // Uninitialised: every slot is written below, by a sample or as padding.
-    x_blocks.reset(new DoubleBlock[blocks]);
-    y_blocks.reset(new DoubleBlock[blocks]);
-    z_blocks.reset(new DoubleBlock[blocks]);
-    slot_sample.reset(new uint32_t[blocks * kOccluderBlock]);
+    // Every slot is written below, by a sample or as padding.
+    x_blocks = atLeast(scratch.x, blocks);
+    y_blocks = atLeast(scratch.y, blocks);
+    z_blocks = atLeast(scratch.z, blocks);
+    slot_sample = atLeast(scratch.slot_sample, blocks * kOccluderBlock);
     double* x = x_blocks[0].v;
     double* y = y_blocks[0].v;
     double* z = z_blocks[0].v;
@@ -248,7 +272,6 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     });
     for (const double f : tile_farthest) farthest = std::max(farthest, f);
   }
-  std::vector<dvec3>().swap(d);  // the blocks hold the samples now
 
   const LightGrids& grids = *grid_storage;
 

@@ -113,14 +113,13 @@ LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
 
   // Each grid spans its samples' bounds, padded; empty grids keep one tile and no samples.
   const size_t n_grids = grids_.size();
-  std::vector<dvec2> uv(d.size());
   std::vector<dvec2> lo(chunks * n_grids, dvec2(HUGE_VAL)), hi(chunks * n_grids, dvec2(-HUGE_VAL));
   std::vector<size_t> count(chunks * n_grids, 0);
   chunked([&](size_t chunk, size_t i) {
     const size_t k = chunk * n_grids + grid_of[i];
-    uv[i] = project(grids_[grid_of[i]], d[i]);
-    lo[k] = glm::min(lo[k], uv[i]);
-    hi[k] = glm::max(hi[k], uv[i]);
+    const dvec2 uv = project(grids_[grid_of[i]], d[i]);
+    lo[k] = glm::min(lo[k], uv);
+    hi[k] = glm::max(hi[k], uv);
     ++count[k];
   });
   for (size_t k = 0; k < n_grids; ++k) {
@@ -151,9 +150,11 @@ LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
     tile_count_ += size_t(g.columns) * size_t(g.rows);
   }
   chunked([&](size_t, size_t i) {
+    // Projected again rather than kept: the same operations give the same bits.
     const LightGrid& g = grids_[grid_of[i]];
-    const int column = tileIndex(uv[i].x, g.u0, g.u1, g.columns);
-    const int row = tileIndex(uv[i].y, g.v0, g.v1, g.rows);
+    const dvec2 uv = project(g, d[i]);
+    const int column = tileIndex(uv.x, g.u0, g.u1, g.columns);
+    const int row = tileIndex(uv.y, g.v0, g.v1, g.rows);
     sample_tile_[i] = uint32_t(g.first_tile + size_t(row) * size_t(g.columns) + size_t(column));
   });
 }
