@@ -85,16 +85,38 @@ TEST(AliasFreeOracle, SharedModelScenes) {
   EXPECT_GT(scenes, 0);
 }
 
-// A light among the visible geometry: no single frustum holds every sample, so the samples go
-// to the six cube faces. If this failed, occluders would be lost at the faces' seams.
-TEST(AliasFreeOracle, LightInsideViewUsesCubeFaces) {
-  const Scene scene = sphereOverGround(vec3(6, 4, 6), vec3(0, 4, 0), vec3(-1, 5, -1));
+// Directions from the light to every covered pixel's depth-buffer point: close enough to the
+// samples to tell which light grids a frame gets.
+LightGrids gridsOf(const testing::OracleComparison& c, const View& view, const vec3& light) {
+  std::vector<dvec3> d;
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x)
+      if (c.eye.depth.depth.at(x, y) > 0.0f)
+        d.push_back(view.unproject(x, y, c.eye.depth.depth.at(x, y)) - dvec3(light));
+  return LightGrids(d, 16);
+}
+
+// A light just above the ground among the visible geometry: the samples surround it, no single
+// frustum holds them, so they go to the six cube faces. If this failed, occluders would be lost
+// at the faces' seams. And a light high above: one frustum.
+TEST(AliasFreeOracle, LightAmongTheSamplesUsesCubeFaces) {
+  const vec3 low(2.5f, 2.2f, 0.3f);  // beside the sphere: it casts a long shadow on the ground
+  const Scene scene = sphereOverGround(vec3(6, 4, 6), vec3(0, 1, 0), low);
   const View view = scene.camera.makeView(200, 134);
-  expectMatchesOracle(compareHardWithOracle(scene, view, aliasFree()), "light in view");
-  // The eye sits in the sphere's shadow, looking down past it.
-  const Scene under = sphereOverGround(vec3(0.2f, 0.6f, 0.1f), vec3(4, 0, 3), vec3(0, 12, 0));
-  expectMatchesOracle(compareHardWithOracle(under, under.camera.makeView(200, 134), aliasFree()),
-                      "eye in shadow");
+  const auto c = compareHardWithOracle(scene, view, aliasFree());
+  expectMatchesOracle(c, "light among the samples");
+  EXPECT_FALSE(gridsOf(c, view, low).singleFrustum());
+  int shadowed = 0;
+  for (size_t i = 0; i < c.technique.visibility.size(); ++i)
+    shadowed += c.eye.depth.depth[i] > 0 && c.technique.visibility[i] == 0.0f;
+  EXPECT_GT(shadowed, 1000) << "the test needs shadows across the cube faces, has " << shadowed;
+
+  const vec3 high(0, 12, 0);
+  const Scene under = sphereOverGround(vec3(0.2f, 0.6f, 0.1f), vec3(4, 0, 3), high);
+  const View under_view = under.camera.makeView(200, 134);
+  const auto u = compareHardWithOracle(under, under_view, aliasFree());
+  expectMatchesOracle(u, "eye in shadow, light high above");
+  EXPECT_TRUE(gridsOf(u, under_view, high).singleFrustum());
 }
 
 // A light inside a closed sphere: every outside point is in shadow, but for a tie or two on the
