@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
+#include <string>
 
 #include "eye_frame_util.h"
 #include "scene/builtin_scenes.h"
@@ -131,6 +133,35 @@ TEST(AliasFreeOracle, LightInsideClosedMesh) {
   for (size_t i = 0; i < c.technique.visibility.size(); ++i)
     lit += c.eye.depth.depth[i] > 0 && c.technique.visibility[i] != 0.0f;
   EXPECT_LE(lit, 3);
+}
+
+// Bad input is refused by name, and awkward but valid lights get the oracle's answer: a light
+// lying exactly in the ground's plane (every ground triangle edge-on to it: they cast nothing,
+// and the ground neither faces it nor away), and one exactly at a vertex of the sphere.
+TEST(AliasFreeInput, NonFiniteLightRefusedAndDegenerateLightsMatchTheOracle) {
+  Scene scene = sphereOverGround(vec3(5, 4, 6), vec3(0, 1, 0), vec3(3, 0, 1));
+  const View view = scene.camera.makeView(160, 107);
+  expectMatchesOracle(compareHardWithOracle(scene, view, aliasFree()), "light in the ground plane");
+  // On the sphere's surface the light puts the sphere's whole shadow edge on its tangent plane
+  // there, and the triangles around the vertex pass through the light (they cast nothing here;
+  // the oracle's rays, shortened by 1e-6 before the light, decide them their own way): pixels
+  // along that edge are ties, so only differences off a boundary are errors.
+  const vec3 vertex = scene.meshes[1].positions[scene.meshes[1].positions.size() / 2];
+  scene.lights[0].center = vertex;
+  const auto at_vertex = compareHardWithOracle(scene, view, aliasFree());
+  EXPECT_EQ(at_vertex.agreement.off_boundary, 0u) << "light at a vertex";
+  EXPECT_LE(at_vertex.agreement.differing, at_vertex.agreement.covered / 100) << "light at a vertex";
+
+  const testing::EyeFrame f = testing::makeEyeFrame(scene, 40, 27);
+  Light bad = f.scene.lights[0];
+  bad.center.x = std::numeric_limits<float>::quiet_NaN();
+  try {
+    renderShadows(aliasFree(), f.scene, bad, f.view, f.eye);
+    ADD_FAILURE() << "a NaN light centre must be refused";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("light centre is not finite"), std::string::npos)
+        << e.what();
+  }
 }
 
 // A 2 x 2 square at height 1 over a ground plane, a point light above: a ground point is in

@@ -10,8 +10,8 @@
 //    light's image plane (one frustum, or six cube faces: light_grids.h) and binned into
 //    light-space tiles, stored tile by tile in blocks of kOccluderBlock for the SIMD kernel.
 // 3. Binning the occluders. Every scene triangle is clipped to each grid's frustum; the tiles
-//    its projected bounds cover are its candidates (P5 section 3 rasterizes conservatively over
-//    the tiles). A (triangle, tile) pair is culled when the triangle's nearest point to the
+//    its projected bounds cover are its candidates (a conservative rasterization over the
+//    tiles). A (triangle, tile) pair is culled when the triangle's nearest point to the
 //    light is farther than every sample of the tile: it cannot lie between the light and any
 //    of them (the light-space analogue of z-max culling).
 // 4. Tests. Per tile, every triangle binned to it is tested against the tile's samples, exactly

@@ -1,7 +1,8 @@
 #pragma once
 // The light's image plane for the alias-free shadow map: where the eye samples land when seen
 // from the light centre, and the grid of light-space tiles they are binned into (the irregular
-// z-buffer's tiles; Aila & Laine 2004, section 3).
+// z-buffer's tiles; Aila's 2005 thesis, section 4.1, Figure 4.1b: the samples on the light's
+// image plane, large empty areas between them).
 //
 // One frustum when every sample lies within kSingleFrustumHalfAngle of their mean direction
 // from the light (a light off to the side of what the eye sees, the common case); else the six
@@ -9,8 +10,8 @@
 // visible geometry, where no single plane can hold every direction). One frustum bins each
 // triangle once, with no seams; the angle limit keeps the projected sample density within a
 // factor 1 / cos^3 = 8 of itself across the plane. Either way each grid spans only the bounding
-// rectangle of its own samples (a frustum fitted to the samples, as P5 fits the light's
-// frustum to the view), so no tile lies where there is nothing to shadow.
+// rectangle of its own samples (a frustum fitted to the samples), so no tile lies where there
+// is nothing to shadow.
 //
 // Projection of a light-relative direction d onto a grid: (d . u / d . axis, d . v / d . axis).
 // The grids only decide which samples a triangle is tested against; the test itself is exact

@@ -2,8 +2,9 @@
 // The alias-free shadow map's one question, asked of an occluder triangle and a batch of eye
 // samples: does the segment from the light centre to the sample cross the triangle? It is the
 // oracle's hard shadow ray (reference_technique.cpp) asked the other way round, from the
-// triangle's side (Aila & Laine 2004, section 3: each triangle is rasterized at the samples'
-// exact light-space positions).
+// triangle's side (Aila's 2005 thesis, section 4.1: the scene is rasterized from the light at
+// the samples' exact light-space positions, which "exactly correspond to the intersections of
+// shadow rays and the image plane of the light source").
 //
 // Everything is relative to the light centre L, in double: a sample is d = origin - L, where
 // origin is the oracle's own float ray origin for the pixel (ray_origin.h). The triangle abc
