@@ -150,7 +150,8 @@ TEST(AliasFreeInput, NonFiniteLightRefusedAndDegenerateLightsMatchTheOracle) {
   scene.lights[0].center = vertex;
   const auto at_vertex = compareHardWithOracle(scene, view, aliasFree());
   EXPECT_EQ(at_vertex.agreement.off_boundary, 0u) << "light at a vertex";
-  EXPECT_LE(at_vertex.agreement.differing, at_vertex.agreement.covered / 100) << "light at a vertex";
+  EXPECT_LE(at_vertex.agreement.differing, at_vertex.agreement.covered / 100)
+      << "light at a vertex";
 
   const testing::EyeFrame f = testing::makeEyeFrame(scene, 40, 27);
   Light bad = f.scene.lights[0];
@@ -230,9 +231,10 @@ TEST(AliasFreeOccluderTest, SharedEdgeTieGoesToExactlyOneTriangle) {
     const auto t1 = flip ? makeOccluderTest(a, c, b, l) : makeOccluderTest(a, b, c, l);
     const auto t2 = flip ? makeOccluderTest(a, d, c, l) : makeOccluderTest(a, c, d, l);
     ASSERT_TRUE(t1 && t2);
-    alignas(kOccluderSampleAlignment) double x[kOccluderBlock] = {0.5, 0.5, 0.25, -0.5, 0.25, 0.75, 3, 0};
-    alignas(kOccluderSampleAlignment) double y[kOccluderBlock] = {0.5, 0.5, -0.25, 0.25, 0.75, 0.25, 3, 0};
-    alignas(kOccluderSampleAlignment) double z[kOccluderBlock] = {2, 0.5, 2, 2, 2, 2, 2, 0};
+    constexpr size_t kN = kOccluderBlock;
+    alignas(kOccluderSampleAlignment) double x[kN] = {0.5, 0.5, 0.25, -0.5, 0.25, 0.75, 3, 0};
+    alignas(kOccluderSampleAlignment) double y[kN] = {0.5, 0.5, -0.25, 0.25, 0.75, 0.25, 3, 0};
+    alignas(kOccluderSampleAlignment) double z[kN] = {2, 0.5, 2, 2, 2, 2, 2, 0};
     // on the diagonal beyond, on it in front, in t1 only, in t2 only, in t2, in t1, outside,
     // the light itself
     const int64_t want1[kOccluderBlock] = {-1, 0, -1, 0, 0, -1, 0, 0};

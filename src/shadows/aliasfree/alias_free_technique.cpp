@@ -37,6 +37,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -53,7 +54,8 @@ namespace {
 
 constexpr uint32_t kNoSample = 0xffffffffu;
 constexpr size_t kTrianglesPerChunk = 1024;
-constexpr size_t kSamplesPerChunk = 65536;
+constexpr size_t kSamplesPerChunk = 65536;  // at least, per work item of the counting sort
+constexpr size_t kMaxSampleChunks = 16;
 constexpr size_t kTilesPerItem = 256;
 
 // A triangle is culled from a tile when its nearest point is farther from the light than the
@@ -70,7 +72,6 @@ struct alignas(kOccluderSampleAlignment) FlagBlock {
 struct Occluder {
   OccluderTest test;
   double nearest = 0.0;  // distance from the light centre to the triangle's nearest point
-  bool valid = false;
 };
 
 // Buffers of one render, kept by the prepared technique for the next: a frame's samples take
@@ -98,7 +99,9 @@ class AliasFree final : public PreparedTechnique {
  public:
   AliasFree(const AliasFreeOptions& options, const Scene& scene)
       : options_(options), scene_(scene) {
-    for (const Mesh& mesh : scene.meshes) triangle_count_ += mesh.triangleCount();
+    for (uint32_t m = 0; m < scene.meshes.size(); ++m)
+      for (uint32_t t = 0; t < scene.meshes[m].triangleCount(); ++t) where_.emplace_back(m, t);
+    triangle_count_ = where_.size();
   }
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override;
@@ -106,6 +109,7 @@ class AliasFree final : public PreparedTechnique {
  private:
   AliasFreeOptions options_;
   const Scene& scene_;
+  std::vector<std::pair<uint32_t, uint32_t>> where_;  // (mesh, triangle) of every global id
   size_t triangle_count_ = 0;
   // One render at a time uses the kept buffers; a concurrent one makes its own.
   mutable std::mutex scratch_mutex_;
@@ -208,13 +212,16 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     grid_storage.emplace(d, options_.tile_samples);
     const LightGrids& grids = *grid_storage;
     tiles = grids.tileCount();
-    const size_t chunks = (d.size() + kSamplesPerChunk - 1) / kSamplesPerChunk;
+    // At most kMaxSampleChunks chunks, so the per-chunk counts take at most 16 entries a tile.
+    const size_t chunk_size =
+        std::max(kSamplesPerChunk, (d.size() + kMaxSampleChunks - 1) / kMaxSampleChunks);
+    const size_t chunks = (d.size() + chunk_size - 1) / chunk_size;
     // Per chunk and tile: the chunk's sample count, then its first slot within the tile.
     std::vector<uint32_t>& chunk_tile = scratch.chunk_tile;
     chunk_tile.assign(chunks * tiles, 0);
     parallelFor(chunks, [&](size_t c) {
-      const size_t end = std::min(d.size(), (c + 1) * kSamplesPerChunk);
-      for (size_t i = c * kSamplesPerChunk; i < end; ++i) ++chunk_tile[c * tiles + grids.tileOf(i)];
+      const size_t end = std::min(d.size(), (c + 1) * chunk_size);
+      for (size_t i = c * chunk_size; i < end; ++i) ++chunk_tile[c * tiles + grids.tileOf(i)];
     });
     tile_samples.assign(tiles, 0);
     parallelFor((tiles + kTilesPerItem - 1) / kTilesPerItem, [&](size_t item) {
@@ -243,8 +250,8 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
     double* y = y_blocks[0].v;
     double* z = z_blocks[0].v;
     parallelFor(chunks, [&](size_t c) {
-      const size_t end = std::min(d.size(), (c + 1) * kSamplesPerChunk);
-      for (size_t i = c * kSamplesPerChunk; i < end; ++i) {
+      const size_t end = std::min(d.size(), (c + 1) * chunk_size);
+      for (size_t i = c * chunk_size; i < end; ++i) {
         const size_t t = grids.tileOf(i);
         const size_t slot = tile_block[t] * kOccluderBlock + chunk_tile[c * tiles + t]++;
         x[slot] = d[i].x;
@@ -284,22 +291,17 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
   std::vector<uint32_t> lists;
   {
     PassTimer timer(stats, "binning");
-    std::vector<std::pair<uint32_t, uint32_t>> where;  // (mesh, triangle) of every global id
-    where.reserve(triangle_count_);
-    for (uint32_t m = 0; m < scene_.meshes.size(); ++m)
-      for (uint32_t t = 0; t < scene_.meshes[m].triangleCount(); ++t) where.emplace_back(m, t);
     std::vector<uint64_t> chunk_triangles(chunks, 0);
     parallelFor(chunks, [&](size_t chunk) {
       const size_t end = std::min(triangle_count_, (chunk + 1) * kTrianglesPerChunk);
       for (size_t id = chunk * kTrianglesPerChunk; id < end; ++id) {
-        const Mesh& mesh = scene_.meshes[where[id].first];
-        const vec3 a = mesh.vertex(where[id].second, 0), b = mesh.vertex(where[id].second, 1),
-                   c = mesh.vertex(where[id].second, 2);
+        const auto [m, t] = where_[id];
+        const Mesh& mesh = scene_.meshes[m];
+        const vec3 a = mesh.vertex(t, 0), b = mesh.vertex(t, 1), c = mesh.vertex(t, 2);
         const std::optional<OccluderTest> test = makeOccluderTest(a, b, c, light.center);
         if (!test) continue;
         Occluder& o = occluders[id];
         o.test = *test;
-        o.valid = true;
         const dvec3 pa = dvec3(a) - centre, pb = dvec3(b) - centre, pc = dvec3(c) - centre;
         o.nearest = glm::length(closestPointOnTriangle(dvec3(0.0), pa, pb, pc));
         if (o.nearest > farthest * (1.0 + kCullMargin)) continue;  // beyond every sample
