@@ -255,8 +255,8 @@ double meanField(const json& light) {
 
 // Differences between two counter objects, by name, in the union of both names. A counter the
 // golden record lacks is no difference while it is 0: a counter declared after the recording
-// (stats.h) that none of the recorded configurations uses, such as the shadow maps' lookups.
-// Once it counts anything in a recorded configuration, it is reported.
+// (stats.h) that none of the recorded configurations uses, such as the shadow maps' lookups or
+// alias-free's light samples. Once it counts anything in a recorded configuration, it is reported.
 void compareCounters(const std::string& where, const json& expected, const json& actual,
                      std::vector<std::string>& out) {
   std::set<std::string> names;

@@ -2,6 +2,7 @@
 // names it. Order is the order of `penumbra techniques` and of the conformance suite.
 #include "shadows/technique_table.h"
 
+#include "shadows/aliasfree/alias_free_technique.h"
 #include "shadows/coverage/coverage_technique.h"
 #include "shadows/exact/exact_technique.h"
 #include "shadows/heckbert_herf/heckbert_herf_technique.h"
@@ -27,6 +28,7 @@ std::vector<TechniqueInfo> builtinTechniques() {
       maskTechnique(MaskChannel::Colour),
       shadowMapTechnique(),
       pcssTechnique(),
+      aliasFreeTechnique(),
       referenceTechnique(),
   };
 }

@@ -28,6 +28,8 @@ namespace penumbra {
   /* skipped as outside the light's frustum (Arvo & Aila 2003; thesis section 4.2). */           \
   X(shadow_map_lookups, "pixels whose point was looked up in a shadow map")                      \
   X(lookups_saved, "pixels a stencil-limited shadow map skipped: outside the light frustum")     \
+  X(light_samples, "eye samples placed in the light's irregular z-buffer (alias-free)")          \
+  X(sample_tests, "(occluder triangle, light-space sample) pairs tested (alias-free)")           \
   /* Pixels whose depth point was tested against a wedge, and of those the ones truly inside */  \
   /* it. Their ratio is the distance from perfect culling (2004 paper, section 4). */            \
   X(penumbra_tests, "pixels whose point was tested against a wedge")                             \
