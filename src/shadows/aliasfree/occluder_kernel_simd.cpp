@@ -2,6 +2,8 @@
 // step in double, the same operations in the same order, the tests as all-ones lane masks.
 #include "shadows/aliasfree/occluder_test.h"
 
+#include "core/simd_dispatch.h"
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -65,7 +67,7 @@ HWY_EXPORT(MarkShadowedSamplesSimd);
 
 void markShadowedSamples(const OccluderTest& test, const double* dx, const double* dy,
                          const double* dz, int64_t* shadowed, size_t n, bool simd) {
-  if (simd) {
+  if (useSimd(simd)) {
     HWY_DYNAMIC_DISPATCH(MarkShadowedSamplesSimd)(test, dx, dy, dz, shadowed, n);
   } else {
     markShadowedSamplesScalar(test, dx, dy, dz, shadowed, n);
