@@ -262,6 +262,8 @@ void compareCounters(const std::string& where, const json& expected, const json&
   for (const std::string& name : names) {
     const json& e = field(expected, name);
     const json& a = field(actual, name);
+    // A counter added to Stats after the golden file was recorded: zero is the work it had.
+    if (e.is_null() && a == json(0)) continue;
     if (e != a) {
       out.push_back(fmt::format("{}: counter {} expected {} actual {}", where, name,
                                 valueText(e), valueText(a)));

@@ -3,6 +3,7 @@
 #include "shadows/technique_table.h"
 
 #include "shadows/exact/exact_technique.h"
+#include "shadows/hierarchical/hierarchical_technique.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/shadowmap/shadow_map_technique.h"
 #include "shadows/volume/volume_technique.h"
@@ -13,6 +14,8 @@ namespace penumbra {
 std::vector<TechniqueInfo> builtinTechniques() {
   return {
       volumeTechnique(),
+      depthBoundsVolumeTechnique(),
+      hierarchicalVolumeTechnique(),
       wedgeTechnique(WedgeAlgorithm::ThreePass),
       wedgeTechnique(WedgeAlgorithm::SinglePass),
       wedgeTechnique(WedgeAlgorithm::Original2002),

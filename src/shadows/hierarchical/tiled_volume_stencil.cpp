@@ -1,0 +1,305 @@
+#include "shadows/hierarchical/tiled_volume_stencil.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/parallel.h"
+#include "raster/binning.h"
+#include "raster/cull_tiles.h"
+#include "raster/fixed_point.h"
+#include "raster/tile_copy.h"
+#include "raster/tile_kernels.h"
+#include "shadows/hierarchical/tile_box_test.h"
+
+namespace penumbra {
+namespace {
+
+constexpr int kMaxCells = (kBinTileSize / 4) * (kBinTileSize / 4);  // 4x4 tiles
+
+struct TileWork {
+  KernelCounts kernel;
+  CullTally tally;
+  uint64_t z_reads = 0;  // beyond the kernels': surface ranges of tiles with background
+  uint64_t writes = 0;   // beyond the kernels': per-tile counts and their addition to pixels
+  uint64_t lit = 0, shadowed = 0, boundary = 0;
+};
+
+// A culling tile of a bin tile: its pixels, and the depth range and a sample pixel of its
+// surface pixels (none: only background, nothing to shadow).
+struct Cell {
+  int x0, y0, x1, y1;
+  bool surface = false;
+  float zmin = 0.0f, zmax = 0.0f;
+  int sample_x = 0, sample_y = 0;
+};
+
+class BinTile {
+ public:
+  BinTile(const TileBox& box, const DepthBuffer& depth, int level, const float* tile_depth,
+          TileWork& work)
+      : box_(box), level_(level), per_row_(kBinTileSize >> level) {
+    const TileDepthRange& range = depth.tileRange(level);
+    const int size = 1 << level;
+    for (int cy = 0; cy < per_row_; ++cy)
+      for (int cx = 0; cx < per_row_; ++cx) {
+        Cell& c = cells_[cy * per_row_ + cx];
+        c.x0 = box.x0 + cx * size;
+        c.y0 = box.y0 + cy * size;
+        c.x1 = std::min(box.x1, c.x0 + size - 1);
+        c.y1 = std::min(box.y1, c.y0 + size - 1);
+        if (c.x0 > box.x1 || c.y0 > box.y1) continue;
+        const float zmin = range.zmin.at(c.x0 >> level, c.y0 >> level);
+        const float zmax = range.zmax.at(c.x0 >> level, c.y0 >> level);
+        if (zmax <= 0.0f) continue;  // only background
+        c.surface = true;
+        c.zmax = zmax;
+        c.zmin = zmin;
+        c.sample_x = c.x0;
+        c.sample_y = c.y0;
+        if (zmin > 0.0f) continue;
+        // Background pixels (depth 0, infinity) would stretch the box to infinity, where every
+        // volume extruded away from the light reaches: the box is taken over the surface
+        // pixels only (the stencil is never read on the background), at the cost of reading
+        // the tile's depths. The sample is the first surface pixel.
+        c.zmin = zmax;
+        bool found = false;
+        for (int y = c.y0; y <= c.y1; ++y)
+          for (int x = c.x0; x <= c.x1; ++x) {
+            const float d = tile_depth[(y - box.y0) * kBinTileSize + (x - box.x0)];
+            ++work.z_reads;
+            if (d <= 0.0f) continue;
+            c.zmin = std::min(c.zmin, d);
+            if (!found) c.sample_x = x, c.sample_y = y, found = true;
+          }
+      }
+  }
+  int perRow() const { return per_row_; }
+  int level() const { return level_; }
+  const TileBox& box() const { return box_; }
+  const Cell& cell(int cx, int cy) const { return cells_[cy * per_row_ + cx]; }
+  // Cells the rect's pixels touch, local to the bin tile.
+  void cellRange(const TileEdges& e, int& cx0, int& cy0, int& cx1, int& cy1) const {
+    cx0 = (e.x0 - box_.x0) >> level_;
+    cx1 = (e.x1 - box_.x0) >> level_;
+    cy0 = (e.y0 - box_.y0) >> level_;
+    cy1 = (e.y1 - box_.y0) >> level_;
+  }
+
+ private:
+  TileBox box_;
+  int level_, per_row_;
+  Cell cells_[kMaxCells];
+};
+
+struct Drawn {
+  int32_t contribution;
+  DepthRule rule;
+};
+
+Drawn drawn(const SetupTriangle& t) {
+  const bool zfail = (t.flags & kZFail) != 0;
+  return {t.payload * t.facing * (zfail ? -1 : 1), zfail ? DepthRule::NotCloser : DepthRule::Closer};
+}
+
+// Depth bounds: the volume's triangles drawn per pixel in the tiles that neither the ordinary
+// depth-rule test (rasterizer.cpp: depthRuleTiles) nor the volume's bounds reject.
+void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
+                      const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
+                      const StencilTarget& target, bool simd, TileWork& work) {
+  const bool zfail = set.zfail[v] != 0;
+  const float lo = set.depth_min[v], hi = set.depth_max[v];
+  // Surfaces nearer than the whole volume: z-pass counts nothing there, z-fail the volume's
+  // count at the eye, zero unless the eye may be inside.
+  const bool near_test = !zfail || !set.may_contain_eye[v];
+  const TileBox& box = tile.box();
+  for (const uint32_t* k = first; k != last; ++k) {
+    const SetupTriangle& t = set.triangles[*k];
+    if (t.flags & kClassifyOnly) continue;
+    TileEdges e;
+    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    const Drawn d = drawn(t);
+    forEachCullRect(
+        t, e, depth, tile.level(),
+        [&](const TileEdges& sub, float zmin, float zmax) {
+          if (near_test && zmin > hi) return 0;  // every surface nearer than the volume
+          if (zfail && zmax < lo) return 0;    // every surface farther than the volume
+          return depthRuleTiles(t, sub, zfail, zmin, zmax, false) == DepthRuleTiles::None ? 0
+                                                                                         : 1;
+        },
+        [&](const TileEdges& rect, int) {
+          stencilKernel(rect, d.contribution, d.rule, target, work.kernel, simd);
+        },
+        work.tally);
+  }
+}
+
+// Hierarchical: classify the volume's tiles, decide the inner ones by their sample, draw the
+// boundary ones per pixel. Adds the decided counts to `coarse`.
+void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
+                      const uint32_t* last, const BinTile& tile, const StencilTarget& target,
+                      bool simd, int32_t* coarse, TileWork& work) {
+  const bool zfail = set.zfail[v] != 0;
+  const bool per_pixel_only = !zfail && set.may_contain_eye[v] != 0;
+  const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
+  const int n = tile.perRow();
+  uint8_t touched[kMaxCells] = {}, boundary[kMaxCells] = {};
+  int32_t sample[kMaxCells] = {};
+  const TileBox& box = tile.box();
+  for (const uint32_t* k = first; k != last; ++k) {
+    const SetupTriangle& t = set.triangles[*k];
+    TileEdges e;
+    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    const bool classify_only = (t.flags & kClassifyOnly) != 0;
+    const int32_t contribution = drawn(t).contribution;
+    int cx0, cy0, cx1, cy1;
+    tile.cellRange(e, cx0, cy0, cx1, cy1);
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        const int i = cy * n + cx;
+        const Cell& c = tile.cell(cx, cy);
+        if (!c.surface || boundary[i]) continue;
+        if (per_pixel_only) {
+          touched[i] = boundary[i] = !classify_only;
+          continue;
+        }
+        ++work.tally.tested;
+        const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
+        if (cls == TileBoxClass::Outside) {
+          ++work.tally.culled;
+          continue;
+        }
+        touched[i] = 1;
+        if (cls == TileBoxClass::Crossing ||
+            (classify_only && cls != TileBoxClass::Behind)) {
+          // A z-pass light cap in front of the box would be counted by the closed volume but
+          // is never drawn: decided per pixel too (never happens where the cap is the eye
+          // pass's own triangle, which nothing visible lies behind).
+          boundary[i] = 1;
+        } else if (cls == counted && !classify_only && coversPixel(t, c.sample_x, c.sample_y)) {
+          sample[i] += contribution;
+        }
+      }
+  }
+  bool any_boundary = false;
+  for (int i = 0; i < n * n; ++i) {
+    if (!touched[i]) continue;
+    if (boundary[i]) {
+      ++work.boundary;
+      any_boundary = true;
+    } else if (sample[i] != 0) {
+      ++work.shadowed;
+      ++work.writes;  // the per-tile count
+      coarse[i] += sample[i];
+    } else {
+      ++work.lit;
+    }
+  }
+  if (!any_boundary) return;
+  const int size = 1 << tile.level();
+  for (const uint32_t* k = first; k != last; ++k) {
+    const SetupTriangle& t = set.triangles[*k];
+    if (t.flags & kClassifyOnly) continue;
+    TileEdges e;
+    // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
+    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    int cx0, cy0, cx1, cy1;
+    tile.cellRange(e, cx0, cy0, cx1, cy1);
+    bool any = false;
+    for (int cy = cy0; cy <= cy1 && !any; ++cy)
+      for (int cx = cx0; cx <= cx1 && !any; ++cx) any = boundary[cy * n + cx] != 0;
+    if (!any || !setupRectEdges(t, e)) continue;
+    const Drawn d = drawn(t);
+    // Runs of boundary tiles along each row of tiles, one kernel call each.
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        if (!boundary[cy * n + cx]) continue;
+        int end = cx;
+        while (end + 1 <= cx1 && boundary[cy * n + end + 1]) ++end;
+        TileEdges sub = e;
+        sub.x0 = std::max(e.x0, box.x0 + cx * size);
+        sub.x1 = std::min(e.x1, box.x0 + end * size + size - 1);
+        sub.y0 = std::max(e.y0, box.y0 + cy * size);
+        sub.y1 = std::min(e.y1, box.y0 + cy * size + size - 1);
+        stencilKernel(sub, d.contribution, d.rule, target, work.kernel, simd);
+        cx = end;
+      }
+  }
+}
+
+TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
+  const int tx = int(tile % size_t(bins.tiles_x)), ty = int(tile / size_t(bins.tiles_x));
+  const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
+  return {x0, y0, std::min(width, x0 + kBinTileSize) - 1, std::min(height, y0 + kBinTileSize) - 1};
+}
+
+}  // namespace
+
+Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer& depth,
+                                  const TiledVolumeStencilOptions& options, Stats& stats) {
+  PENUMBRA_CHECK(options.tile_level >= 2 && options.tile_level <= kBinTileLevel,
+                 "tile level {} is outside 2..{}", options.tile_level, kBinTileLevel);
+  const int width = depth.width(), height = depth.height();
+  Image<int32_t> stencil(width, height, 0);
+  const TileBins bins = binTriangles(set.triangles, width, height);
+  std::vector<TileWork> work(bins.tileCount());
+  parallelFor(bins.tileCount(), [&](size_t index) {
+    const uint32_t* first = bins.triangles.data() + bins.offsets[index];
+    const uint32_t* last = bins.triangles.data() + bins.offsets[index + 1];
+    if (first == last) return;
+    TileWork& w = work[index];
+    const TileBox box = binTileBox(bins, index, width, height);
+    TileCopy<float> tile_depth(depth.depth, box);
+    TileCopy<int32_t> tile_stencil(0);
+    StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};
+    target.x0 = box.x0;
+    target.y0 = box.y0;
+    const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
+    // The surface ranges of tiles with background are only needed (and read) by Hierarchical.
+    TileWork scratch;
+    const BinTile tile(box, depth, options.tile_level, tile_depth.data(),
+                       hierarchical ? w : scratch);
+    int32_t coarse[kMaxCells] = {};
+    // The bin's triangles are in increasing order, so each volume's are one run.
+    size_t v = 0;
+    while (first != last) {
+      while (*first >= set.begin[v + 1]) ++v;
+      const uint32_t* end = first;
+      while (end != last && *end < set.begin[v + 1]) ++end;
+      if (hierarchical)
+        drawHierarchical(set, v, first, end, tile, target, options.simd, coarse, w);
+      else
+        drawDepthBounded(set, v, first, end, tile, depth, target, options.simd, w);
+      first = end;
+    }
+    if (hierarchical) {
+      const int n = tile.perRow();
+      for (int cy = 0; cy < n; ++cy)
+        for (int cx = 0; cx < n; ++cx) {
+          const int32_t sum = coarse[cy * n + cx];
+          if (sum == 0) continue;
+          const Cell& c = tile.cell(cx, cy);
+          for (int y = c.y0; y <= c.y1; ++y)
+            for (int x = c.x0; x <= c.x1; ++x) {
+              const size_t i = size_t(y - box.y0) * kBinTileSize + size_t(x - box.x0);
+              if (tile_depth.data()[i] <= 0.0f) continue;  // background keeps 0
+              tile_stencil.data()[i] += sum;
+              ++w.writes;
+            }
+        }
+    }
+    tile_stencil.storeTo(stencil, box);
+  });
+  for (const TileWork& w : work) {
+    stats.pixels_rasterized += w.kernel.covered;
+    stats.z_reads += w.kernel.covered + w.z_reads;
+    stats.stencil_writes += w.kernel.writes + w.writes;
+    stats.tiles_tested += w.tally.tested;
+    stats.tiles_culled += w.tally.culled;
+    stats.tiles_lit += w.lit;
+    stats.tiles_shadowed += w.shadowed;
+    stats.tiles_boundary += w.boundary;
+  }
+  return stencil;
+}
+
+}  // namespace penumbra
