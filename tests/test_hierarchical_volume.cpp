@@ -208,12 +208,13 @@ Image<int32_t> runPerPixel(const HandCase& c, Stats& stats) {
 // front face only, +1, shadowed. Per pixel in the boundary tiles' 8 x 16 = 128 pixels: the front
 // face covers each once and is in front (128 writes), the back face covers each once and is in
 // front only of the band (4 x 16 = 64 writes): 256 pixels, 256 z reads, 192 writes. The shadowed
-// tiles: 2 per-tile counts written and added to their 2 x 64 surface pixels. Tile tests, in
-// tile order (1,1), (2,1), (1,2), (2,2) per triangle: each front triangle meets the 2x2 tiles of
-// its box, one of them only at a corner of the diagonal (outside): 4 tests, 1 culled, twice; the
-// upper-right back triangle marks (1,1) boundary, finds (2,1) and (2,2) behind and misses (1,2):
-// 4 tests, 1 culled; the lower-left one skips (1,1), boundary already, misses (2,1), marks (1,2)
-// boundary and finds (2,2) behind: 3 tests, 1 culled. 15 tests, 4 culled.
+// tiles: 2 per-tile counts written and added to their 2 x 64 surface pixels. Tile tests: each
+// triangle is first tested against the box of its whole rect (its 2x2 tiles) and the bin tile's
+// depth range 0.1..0.5: the front triangles are in front of it (1 test each, no tile tested
+// alone); the back ones cross it, so their tiles are tested one by one, in the order (1,1),
+// (2,1), (1,2), (2,2): the upper-right one marks (1,1) boundary, finds (2,1) and (2,2) behind
+// and misses (1,2) (1 + 4 tests, 1 culled); the lower-left one skips (1,1), boundary already,
+// misses (2,1), marks (1,2) boundary and finds (2,2) behind (1 + 3 tests, 1 culled).
 float bandSurface(int x, int) { return x >= 12 && x < 16 ? 0.1f : 0.5f; }
 
 TEST(HierarchicalVolume, HandMadeCountersZPass) {
@@ -239,8 +240,8 @@ TEST(HierarchicalVolume, HandMadeCountersZPass) {
     EXPECT_EQ(s.pixels_rasterized, 256u);
     EXPECT_EQ(s.z_reads, 256u);
     EXPECT_EQ(s.stencil_writes, 192u + 2u + 128u);
-    EXPECT_EQ(s.tiles_tested, 15u);
-    EXPECT_EQ(s.tiles_culled, 4u);
+    EXPECT_EQ(s.tiles_tested, 11u);
+    EXPECT_EQ(s.tiles_culled, 2u);
   }
   // Per pixel (8x8 culling tiles): both front triangles everywhere (256 pixels, all written);
   // the back face only where a tile's z-min lies behind it, tiles (1,1), (1,2): 128 pixels,

@@ -15,6 +15,36 @@ TileBoxClass classifyTileBox(const SetupTriangle& t, int x0, int y0, int x1, int
   double px[8], py[8], qx[8], qy[8];
   const double lx = double(pixelCentre(x0) - 1), hx = double(pixelCentre(x1) + 1);
   const double ly = double(pixelCentre(y0) - 1), hy = double(pixelCentre(y1) + 1);
+  // The margin of the depth range (see the header), from the plane's gradient and the size of
+  // the depths it is compared with (the bin tile's origin is within 4 bin tiles of reach).
+  const double reach = std::fabs(t.a) + std::fabs(t.b);
+  auto margin = [&](double lo, double hi) {
+    return 8.0 * FLT_EPSILON *
+               (std::max(std::fabs(lo), std::fabs(hi)) + 4.0 * kBinTileSize * reach) +
+           reach / 8.0 + 1e-30;
+  };
+  auto decide = [&](double lo, double hi) {
+    const double error = margin(lo, hi);
+    if (lo - error > double(zmax)) return TileBoxClass::Front;
+    if (hi + error < double(zmin)) return TileBoxClass::Behind;
+    return TileBoxClass::Crossing;
+  };
+  // Quick answers first, in the order most (triangle, tile) pairs of long shadow quads settle:
+  // an edge with the whole rectangle outside it (at the corner where the edge function is
+  // largest), then the plane's range over the whole rectangle, a superset of the triangle's part.
+  for (int i = 0; i < 3; ++i) {
+    const double A = t.A[i], B = t.B[i];
+    if (A * (A > 0 ? hx : lx) + B * (B > 0 ? hy : ly) + double(t.C[i]) < 0.0)
+      return TileBoxClass::Outside;
+  }
+  {
+    const double z00 = t.a * (lx / kSubpixelSteps) + t.b * (ly / kSubpixelSteps) + t.c;
+    const double across = t.a * ((hx - lx) / kSubpixelSteps);
+    const double down = t.b * ((hy - ly) / kSubpixelSteps);
+    const TileBoxClass whole = decide(z00 + std::min(across, 0.0) + std::min(down, 0.0),
+                                      z00 + std::max(across, 0.0) + std::max(down, 0.0));
+    if (whole != TileBoxClass::Crossing) return whole;
+  }
   px[0] = lx, py[0] = ly, px[1] = hx, py[1] = ly, px[2] = hx, py[2] = hy, px[3] = lx, py[3] = hy;
   int n = 4;
   for (int i = 0; i < 3 && n > 0; ++i) {
@@ -48,15 +78,7 @@ TileBoxClass classifyTileBox(const SetupTriangle& t, int x0, int y0, int x1, int
     hi = std::max(hi, z);
   }
   if (!(lo <= hi)) return TileBoxClass::Crossing;  // NaN plane: decide nothing
-  // Float error of the kernels' evaluation from the bin tile's origin (as rasterizer.cpp's
-  // depthBounds), plus the plane's change over 1/8 pixel (see the header).
-  const double reach = std::fabs(t.a) + std::fabs(t.b);
-  const double error = 8.0 * FLT_EPSILON * (std::max(std::fabs(lo), std::fabs(hi)) +
-                                            4.0 * kBinTileSize * reach) +
-                       reach / 8.0 + 1e-30;
-  if (lo - error > double(zmax)) return TileBoxClass::Front;
-  if (hi + error < double(zmin)) return TileBoxClass::Behind;
-  return TileBoxClass::Crossing;
+  return decide(lo, hi);
 }
 
 }  // namespace penumbra

@@ -72,7 +72,17 @@ class BinTile {
             if (!found) c.sample_x = x, c.sample_y = y, found = true;
           }
       }
+    for (const Cell& c : cells_) {
+      if (!c.surface) continue;
+      any_surface_ = true;
+      zmin_ = std::min(zmin_, c.zmin);
+      zmax_ = std::max(zmax_, c.zmax);
+    }
   }
+  // The depth range of the bin tile's surface pixels: its box holds every cell's.
+  bool anySurface() const { return any_surface_; }
+  float zmin() const { return zmin_; }
+  float zmax() const { return zmax_; }
   int perRow() const { return per_row_; }
   int level() const { return level_; }
   const TileBox& box() const { return box_; }
@@ -88,6 +98,8 @@ class BinTile {
  private:
   TileBox box_;
   int level_, per_row_;
+  bool any_surface_ = false;
+  float zmin_ = 1.0f, zmax_ = 0.0f;
   Cell cells_[kMaxCells];
 };
 
@@ -153,6 +165,18 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     const int32_t contribution = drawn(t).contribution;
     int cx0, cy0, cx1, cy1;
     tile.cellRange(e, cx0, cy0, cx1, cy1);
+    // The triangle against the box of the whole rect's pixels and the bin tile's surface range
+    // first: each cell's box lies inside it, so an answer other than Crossing holds for every
+    // cell (and a cell is then classified without a test of its own: the sample decides).
+    TileBoxClass whole = TileBoxClass::Crossing;
+    if (!per_pixel_only && (cx0 != cx1 || cy0 != cy1)) {
+      ++work.tally.tested;
+      whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
+      if (whole == TileBoxClass::Outside) {
+        ++work.tally.culled;
+        continue;
+      }
+    }
     for (int cy = cy0; cy <= cy1; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx) {
         const int i = cy * n + cx;
@@ -162,8 +186,11 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
           touched[i] = boundary[i] = !classify_only;
           continue;
         }
-        ++work.tally.tested;
-        const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
+        TileBoxClass cls = whole;
+        if (cls == TileBoxClass::Crossing) {
+          ++work.tally.tested;
+          cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
+        }
         if (cls == TileBoxClass::Outside) {
           ++work.tally.culled;
           continue;
@@ -209,20 +236,31 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
       for (int cx = cx0; cx <= cx1 && !any; ++cx) any = boundary[cy * n + cx] != 0;
     if (!any || !setupRectEdges(t, e)) continue;
     const Drawn d = drawn(t);
-    // Runs of boundary tiles along each row of tiles, one kernel call each.
-    for (int cy = cy0; cy <= cy1; ++cy)
+    // Runs of boundary tiles along each row of tiles, extended down over the rows of tiles
+    // with the same runs: one kernel call per rectangle of boundary tiles.
+    auto rowMask = [&](int cy) {
+      uint32_t mask = 0;
+      for (int cx = cx0; cx <= cx1; ++cx) mask |= uint32_t(boundary[cy * n + cx] != 0) << cx;
+      return mask;
+    };
+    for (int cy = cy0; cy <= cy1;) {
+      const uint32_t mask = rowMask(cy);
+      int cy_end = cy;
+      while (cy_end + 1 <= cy1 && rowMask(cy_end + 1) == mask) ++cy_end;
       for (int cx = cx0; cx <= cx1; ++cx) {
-        if (!boundary[cy * n + cx]) continue;
+        if (!(mask >> cx & 1u)) continue;
         int end = cx;
-        while (end + 1 <= cx1 && boundary[cy * n + end + 1]) ++end;
+        while (end + 1 <= cx1 && (mask >> (end + 1) & 1u)) ++end;
         TileEdges sub = e;
         sub.x0 = std::max(e.x0, box.x0 + cx * size);
         sub.x1 = std::min(e.x1, box.x0 + end * size + size - 1);
         sub.y0 = std::max(e.y0, box.y0 + cy * size);
-        sub.y1 = std::min(e.y1, box.y0 + cy * size + size - 1);
+        sub.y1 = std::min(e.y1, box.y0 + cy_end * size + size - 1);
         stencilKernel(sub, d.contribution, d.rule, target, work.kernel, simd);
         cx = end;
       }
+      cy = cy_end + 1;
+    }
   }
 }
 
@@ -258,6 +296,7 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
     TileWork scratch;
     const BinTile tile(box, depth, options.tile_level, tile_depth.data(),
                        hierarchical ? w : scratch);
+    if (!tile.anySurface()) return;  // only background: the stencil stays 0
     int32_t coarse[kMaxCells] = {};
     // The bin's triangles are in increasing order, so each volume's are one run.
     size_t v = 0;
