@@ -103,6 +103,30 @@ class BinTile {
   Cell cells_[kMaxCells];
 };
 
+// True when the segment may meet the tile of pixels [x0, x1] x [y0, y1] (its pixel centres'
+// rectangle, widened by 1/8 pixel for the snapping of the drawn edge, 1/32 pixel at most):
+// Liang-Barsky clipping of the segment to that rectangle.
+bool segmentMeetsTile(const ScreenSegment& s, int x0, int y0, int x1, int y1) {
+  if (s.anywhere) return true;
+  constexpr double kSlack = 0.125;
+  const double lo[2] = {x0 + 0.5 - kSlack, y0 + 0.5 - kSlack};
+  const double hi[2] = {x1 + 0.5 + kSlack, y1 + 0.5 + kSlack};
+  const double p[2] = {s.x0, s.y0}, d[2] = {s.x1 - s.x0, s.y1 - s.y0};
+  double t0 = 0.0, t1 = 1.0;
+  for (int a = 0; a < 2; ++a) {
+    if (d[a] == 0.0) {
+      if (p[a] < lo[a] || p[a] > hi[a]) return false;
+      continue;
+    }
+    double ta = (lo[a] - p[a]) / d[a], tb = (hi[a] - p[a]) / d[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
 struct Drawn {
   int32_t contribution;
   DepthRule rule;
@@ -126,7 +150,6 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   const TileBox& box = tile.box();
   for (const uint32_t* k = first; k != last; ++k) {
     const SetupTriangle& t = set.triangles[*k];
-    if (t.flags & kClassifyOnly) continue;
     TileEdges e;
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
     const Drawn d = drawn(t);
@@ -161,8 +184,14 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-    const bool classify_only = (t.flags & kClassifyOnly) != 0;
     const int32_t contribution = drawn(t).contribution;
+    // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes
+    // where the quad is counted (Front): such a tile is decided per pixel.
+    const ScreenSegment* silhouette =
+        !zfail && t.owners[0] != ClipTriangles::kNoOwner ? &set.silhouettes[t.owners[0]] : nullptr;
+    auto silhouetteMeets = [&](int x0, int y0, int x1, int y1) {
+      return silhouette && segmentMeetsTile(*silhouette, x0, y0, x1, y1);
+    };
     int cx0, cy0, cx1, cy1;
     tile.cellRange(e, cx0, cy0, cx1, cy1);
     // The triangle against the box of the whole rect's pixels and the bin tile's surface range
@@ -176,6 +205,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         ++work.tally.culled;
         continue;
       }
+      if (whole == TileBoxClass::Front && silhouetteMeets(e.x0, e.y0, e.x1, e.y1))
+        whole = TileBoxClass::Crossing;  // decide tile by tile
     }
     for (int cy = cy0; cy <= cy1; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx) {
@@ -183,7 +214,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         const Cell& c = tile.cell(cx, cy);
         if (!c.surface || boundary[i]) continue;
         if (per_pixel_only) {
-          touched[i] = boundary[i] = !classify_only;
+          touched[i] = boundary[i] = 1;
           continue;
         }
         TileBoxClass cls = whole;
@@ -197,12 +228,9 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         }
         touched[i] = 1;
         if (cls == TileBoxClass::Crossing ||
-            (classify_only && cls != TileBoxClass::Behind)) {
-          // A z-pass light cap in front of the box would be counted by the closed volume but
-          // is never drawn: decided per pixel too (never happens where the cap is the eye
-          // pass's own triangle, which nothing visible lies behind).
+            (cls == TileBoxClass::Front && silhouetteMeets(c.x0, c.y0, c.x1, c.y1))) {
           boundary[i] = 1;
-        } else if (cls == counted && !classify_only && coversPixel(t, c.sample_x, c.sample_y)) {
+        } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
           sample[i] += contribution;
         }
       }
@@ -225,7 +253,6 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   const int size = 1 << tile.level();
   for (const uint32_t* k = first; k != last; ++k) {
     const SetupTriangle& t = set.triangles[*k];
-    if (t.flags & kClassifyOnly) continue;
     TileEdges e;
     // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;

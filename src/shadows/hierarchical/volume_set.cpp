@@ -6,6 +6,25 @@
 #include "shadows/caster_volume.h"
 
 namespace penumbra {
+namespace {
+
+// The projected segment between two clip-space points (core/view.h conventions).
+ScreenSegment screenSegment(const vec4& a, const vec4& b, const View& view) {
+  ScreenSegment s{};
+  const dvec4 p(a), q(b);
+  if (!(p.w - p.z >= 0.0 && q.w - q.z >= 0.0 && p.w > 0.0 && q.w > 0.0)) {
+    s.anywhere = true;
+    return s;
+  }
+  s.x0 = (p.x / p.w * 0.5 + 0.5) * view.width;
+  s.y0 = (0.5 - p.y / p.w * 0.5) * view.height;
+  s.x1 = (q.x / q.w * 0.5 + 0.5) * view.width;
+  s.y1 = (0.5 - q.y / q.w * 0.5) * view.height;
+  s.anywhere = false;
+  return s;
+}
+
+}  // namespace
 
 ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const View& view,
                                    const EyeBuffers& eye, VolumeMode mode, Stats& stats) {
@@ -25,23 +44,25 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
     const uint32_t finite = volume.finite, infinite = volume.infinite;
     const uint8_t flags = volume.zfail ? kZFail : 0;
     for (const SilhouetteEdge& e : volume.silhouette.edges) {
-      polygons.add(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags);
+      uint32_t segment = ClipTriangles::kNoOwner;
+      if (!volume.zfail) {
+        segment = uint32_t(set.silhouettes.size());
+        set.silhouettes.push_back(screenSegment(eye.clip_vertices[finite + e.v1],
+                                                eye.clip_vertices[finite + e.v0], view));
+      }
+      polygons.addOwned(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags,
+                        segment, ClipTriangles::kNoOwner);
       polygons.add(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags);
     }
-    forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
-      if (volume.zfail) {
+    // z-pass: caps are never in front of a visible point (volume_technique.cpp).
+    if (volume.zfail)
+      forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
         polygons.add(a, b, c, weight, flags);
-      } else if (a < infinite) {
-        // z-pass: only the light cap, to be classified; the dark cap lies at depth 0, behind
-        // every surface, where z-pass never counts and no tile's box reaches.
-        polygons.add(a, b, c, weight, flags | kClassifyOnly);
-      }
-    });
+      });
     std::vector<SetupTriangle> setup = setupTriangles(polygons, view.width, view.height);
     stats.triangles += setup.size();
     float lo = 1.0f, hi = 0.0f;
     for (const SetupTriangle& t : setup) {
-      if (t.flags & kClassifyOnly) continue;
       lo = std::min(lo, t.depth_min);
       hi = std::max(hi, t.depth_max);
     }

@@ -15,15 +15,21 @@
 
 namespace penumbra {
 
-// Flag of a set-up triangle (triangle_setup.h: kZFail is 2) that is part of its closed volume
-// but never drawn: the light caps of a z-pass volume, which z-pass leaves out of the count
-// (volume_technique.cpp) but whose surface the tile classification must still see.
-inline constexpr uint8_t kClassifyOnly = 0x80;
+// A silhouette edge on screen, between its two finite vertices projected (pixels, unsnapped),
+// for the z-pass volumes (tiled_volume_stencil.cpp says why). `anywhere`: an end lies behind
+// the near plane, so the drawn edge is a clipped piece of a line not worked out here: it is
+// taken to cross every tile.
+struct ScreenSegment {
+  double x0, y0, x1, y1;
+  bool anywhere;
+};
 
 struct ShadowVolumeSet {
   // Every volume's triangles, volume after volume, each volume's in the order the per-pixel
-  // stencil draws them: side quads of its silhouette edges, then with z-fail its caps (and
-  // with z-pass its light caps, flagged kClassifyOnly, last).
+  // stencil draws them: side quads of its silhouette edges, then with z-fail its caps. In a
+  // z-pass volume, the quad triangle holding the silhouette edge (its first) has owners[0] set
+  // to the edge's index in `silhouettes` (the owners are not used otherwise here; fan pieces of
+  // a clipped triangle keep them).
   std::vector<SetupTriangle> triangles;
   // Volume v owns triangles [begin[v], begin[v + 1]).
   std::vector<uint32_t> begin;
@@ -35,6 +41,7 @@ struct ShadowVolumeSet {
   // Per volume, the depth range of its drawn triangles' vertices after clipping (reversed-Z):
   // the depth bounds of thesis section 2.2 (Figure 2.3).
   std::vector<float> depth_min, depth_max;
+  std::vector<ScreenSegment> silhouettes;  // of the z-pass volumes
 
   size_t volumeCount() const { return zfail.size(); }
 };
