@@ -205,16 +205,23 @@ Image<int32_t> runPerPixel(const HandCase& c, Stats& stats) {
 // z-pass, surface at 0.5 except the column band x in [12, 16) at 0.1 (behind the back face).
 // Tiles (1,1) and (1,2) hold depths 0.1..0.5: the back face (0.2) crosses their boxes, so they
 // are boundary tiles; tiles (2,1), (2,2) (depth 0.5) lie between the faces: one sample sees the
-// front face only, +1, shadowed. Per pixel in the boundary tiles' 8 x 16 = 128 pixels: the front
-// face covers each once and is in front (128 writes), the back face covers each once and is in
-// front only of the band (4 x 16 = 64 writes): 256 pixels, 256 z reads, 192 writes. The shadowed
-// tiles: 2 per-tile counts written and added to their 2 x 64 surface pixels. Tile tests: each
-// triangle is first tested against the box of its whole rect (its 2x2 tiles) and the bin tile's
-// depth range 0.1..0.5: the front triangles are in front of it (1 test each, no tile tested
-// alone); the back ones cross it, so their tiles are tested one by one, in the order (1,1),
-// (2,1), (1,2), (2,2): the upper-right one marks (1,1) boundary, finds (2,1) and (2,2) behind
-// and misses (1,2) (1 + 4 tests, 1 culled); the lower-left one skips (1,1), boundary already,
-// misses (2,1), marks (1,2) boundary and finds (2,2) behind (1 + 3 tests, 1 culled).
+// front face only, +1, shadowed.
+//
+// Tile tests: each triangle is first tested against the box of its whole rect (its 2x2 tiles)
+// and the bin tile's depth range 0.1..0.5: the front triangles are in front of it (1 test each,
+// no tile tested alone); the back ones cross it, so their tiles are tested one by one, in the
+// order (1,1), (2,1), (1,2), (2,2): the upper-right one marks (1,1) boundary, finds (2,1) and
+// (2,2) behind and misses (1,2) (1 + 4 tests, 1 culled); the lower-left one skips (1,1),
+// boundary already, misses (2,1), marks (1,2) boundary and finds (2,2) behind (1 + 3 tests,
+// 1 culled). Then the per-pixel part walks each triangle's 4 tiles (16 tests), culling the 2
+// that are not boundary tiles (8 culled).
+//
+// Per pixel in the boundary tiles: the lower-left front triangle covers all of tile (1,2) and
+// is in front of every depth there: taken whole (1 accepted tile, 1 per-tile write); the front
+// face's two triangles share tile (1,1): 64 pixels, all written; the back face covers both
+// tiles, 128 pixels, in front only of the band (4 x 16 = 64 writes). 192 pixels and z reads,
+// 128 kernel writes. Per-tile counts: 2 written for the shadowed tiles, then added to the
+// surface pixels of the three tiles with a non-zero count: 3 x 64.
 float bandSurface(int x, int) { return x >= 12 && x < 16 ? 0.1f : 0.5f; }
 
 TEST(HierarchicalVolume, HandMadeCountersZPass) {
@@ -237,11 +244,12 @@ TEST(HierarchicalVolume, HandMadeCountersZPass) {
     EXPECT_EQ(s.tiles_boundary, 2u);
     EXPECT_EQ(s.tiles_shadowed, 2u);
     EXPECT_EQ(s.tiles_lit, 0u);
-    EXPECT_EQ(s.pixels_rasterized, 256u);
-    EXPECT_EQ(s.z_reads, 256u);
-    EXPECT_EQ(s.stencil_writes, 192u + 2u + 128u);
-    EXPECT_EQ(s.tiles_tested, 11u);
-    EXPECT_EQ(s.tiles_culled, 2u);
+    EXPECT_EQ(s.tiles_accepted, 1u);
+    EXPECT_EQ(s.pixels_rasterized, 192u);
+    EXPECT_EQ(s.z_reads, 192u);
+    EXPECT_EQ(s.stencil_writes, 128u + 1u + 2u + 3u * 64u);
+    EXPECT_EQ(s.tiles_tested, 11u + 16u);
+    EXPECT_EQ(s.tiles_culled, 2u + 8u);
   }
   // Per pixel (8x8 culling tiles): both front triangles everywhere (256 pixels, all written);
   // the back face only where a tile's z-min lies behind it, tiles (1,1), (1,2): 128 pixels,

@@ -22,6 +22,7 @@ struct TileWork {
   uint64_t z_reads = 0;  // beyond the kernels': surface ranges of tiles with background
   uint64_t writes = 0;   // beyond the kernels': per-tile counts and their addition to pixels
   uint64_t lit = 0, shadowed = 0, boundary = 0;
+  uint64_t accepted = 0;  // boundary tiles a polygon covered and passed whole
 };
 
 // A culling tile of a bin tile: its pixels, and the depth range and a sample pixel of its
@@ -171,12 +172,17 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
 // Hierarchical: classify the volume's tiles, decide the inner ones by their sample, draw the
 // boundary ones per pixel. Adds the decided counts to `coarse`.
 void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
-                      const uint32_t* last, const BinTile& tile, const StencilTarget& target,
-                      bool simd, int32_t* coarse, TileWork& work) {
+                      const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
+                      const StencilTarget& target, bool simd, int32_t* coarse, TileWork& work) {
   const bool zfail = set.zfail[v] != 0;
-  const bool per_pixel_only = !zfail && set.may_contain_eye[v] != 0;
-  const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
   const int n = tile.perRow();
+  // Every tile of this volume drawn per pixel (as boundary tiles) when its triangles here
+  // outnumber twice the tiles: a volume of many small polygons (a finely tessellated caster's
+  // silhouette) crosses nearly every tile it reaches, and testing each (triangle, tile) pair
+  // would cost more than the pixels it could save. The stencil is the same either way.
+  const bool dense = last - first > 2 * n * n;
+  const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;
+  const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
   uint8_t touched[kMaxCells] = {}, boundary[kMaxCells] = {};
   int32_t sample[kMaxCells] = {};
   const TileBox& box = tile.box();
@@ -235,9 +241,10 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         }
       }
   }
-  bool any_boundary = false;
+  bool any_boundary = false, any_decided = false;
   for (int i = 0; i < n * n; ++i) {
     if (!touched[i]) continue;
+    any_decided |= !boundary[i];
     if (boundary[i]) {
       ++work.boundary;
       any_boundary = true;
@@ -250,44 +257,54 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     }
   }
   if (!any_boundary) return;
-  const int size = 1 << tile.level();
+  // The boundary tiles drawn per pixel as the per-pixel passes draw (rasterizer.cpp): the
+  // depth-rule test per tile from its z-min and z-max culls the tiles no pixel of which can
+  // pass, and a polygon covering a whole tile and passing at every pixel of it adds to the
+  // tile's count instead (the z-min trivial accept, thesis section 1.5).
+  constexpr int kDraw = 1, kWhole = 2;
+  // With every tile the volume reaches a boundary tile, its triangles are drawn over their
+  // whole rects, tested per bin tile as the per-pixel passes do: outside the touched tiles
+  // they cover no pixel with a surface (classifyTileBox found them Outside there).
+  const int level = any_decided ? tile.level() : kBinTileLevel;
   for (const uint32_t* k = first; k != last; ++k) {
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
     // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-    int cx0, cy0, cx1, cy1;
-    tile.cellRange(e, cx0, cy0, cx1, cy1);
-    bool any = false;
-    for (int cy = cy0; cy <= cy1 && !any; ++cy)
-      for (int cx = cx0; cx <= cx1 && !any; ++cx) any = boundary[cy * n + cx] != 0;
-    if (!any || !setupRectEdges(t, e)) continue;
     const Drawn d = drawn(t);
-    // Runs of boundary tiles along each row of tiles, extended down over the rows of tiles
-    // with the same runs: one kernel call per rectangle of boundary tiles.
-    auto rowMask = [&](int cy) {
-      uint32_t mask = 0;
-      for (int cx = cx0; cx <= cx1; ++cx) mask |= uint32_t(boundary[cy * n + cx] != 0) << cx;
-      return mask;
-    };
-    for (int cy = cy0; cy <= cy1;) {
-      const uint32_t mask = rowMask(cy);
-      int cy_end = cy;
-      while (cy_end + 1 <= cy1 && rowMask(cy_end + 1) == mask) ++cy_end;
-      for (int cx = cx0; cx <= cx1; ++cx) {
-        if (!(mask >> cx & 1u)) continue;
-        int end = cx;
-        while (end + 1 <= cx1 && (mask >> (end + 1) & 1u)) ++end;
-        TileEdges sub = e;
-        sub.x0 = std::max(e.x0, box.x0 + cx * size);
-        sub.x1 = std::min(e.x1, box.x0 + end * size + size - 1);
-        sub.y0 = std::max(e.y0, box.y0 + cy * size);
-        sub.y1 = std::min(e.y1, box.y0 + cy_end * size + size - 1);
-        stencilKernel(sub, d.contribution, d.rule, target, work.kernel, simd);
-        cx = end;
-      }
-      cy = cy_end + 1;
-    }
+    forEachCullRect(
+        t, e, depth, level,
+        [&](const TileEdges& sub, float zmin, float zmax) {
+          if (any_decided) {
+            int cx0, cy0, cx1, cy1;
+            tile.cellRange(sub, cx0, cy0, cx1, cy1);
+            bool any = false;
+            for (int cy = cy0; cy <= cy1 && !any; ++cy)
+              for (int cx = cx0; cx <= cx1 && !any; ++cx) any = boundary[cy * n + cx] != 0;
+            if (!any) return 0;
+          }
+          switch (depthRuleTiles(t, sub, zfail, zmin, zmax, true)) {
+            case DepthRuleTiles::None: return 0;
+            case DepthRuleTiles::Some: return kDraw;
+            case DepthRuleTiles::All: return kDraw | kWhole;
+          }
+          return kDraw;
+        },
+        [&](const TileEdges& rect, int code) {
+          if (!(code & kWhole)) {
+            stencilKernel(rect, d.contribution, d.rule, target, work.kernel, simd);
+            return;
+          }
+          int cx0, cy0, cx1, cy1;
+          tile.cellRange(rect, cx0, cy0, cx1, cy1);
+          for (int cy = cy0; cy <= cy1; ++cy)
+            for (int cx = cx0; cx <= cx1; ++cx) {
+              coarse[cy * n + cx] += d.contribution;
+              ++work.writes;
+              ++work.accepted;
+            }
+        },
+        work.tally, kWhole);
   }
 }
 
@@ -332,7 +349,7 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
       const uint32_t* end = first;
       while (end != last && *end < set.begin[v + 1]) ++end;
       if (hierarchical)
-        drawHierarchical(set, v, first, end, tile, target, options.simd, coarse, w);
+        drawHierarchical(set, v, first, end, tile, depth, target, options.simd, coarse, w);
       else
         drawDepthBounded(set, v, first, end, tile, depth, target, options.simd, w);
       first = end;
@@ -364,6 +381,7 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
     stats.tiles_lit += w.lit;
     stats.tiles_shadowed += w.shadowed;
     stats.tiles_boundary += w.boundary;
+    stats.tiles_accepted += w.accepted;
   }
   return stencil;
 }
