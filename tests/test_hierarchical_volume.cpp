@@ -40,11 +40,16 @@ void expectSameStencils(const Scene& scene, const View& view, VolumeMode mode,
         shadowStencil(scene, centre, view, eye, per_pixel, per_pixel_stats);
     Stats set_stats;
     const ShadowVolumeSet volumes = buildShadowVolumes(scene, centre, view, eye, mode, set_stats);
-    for (VolumeCulling culling : {VolumeCulling::DepthBounds, VolumeCulling::Hierarchical})
+    for (int variant = 0; variant < 3; ++variant)
       for (int level : levels) {
+        // Depth bounds; hierarchical as the thesis (every tile classified); hierarchical with
+        // the default dense limit (dense volumes drawn per pixel, unclassified).
+        const VolumeCulling culling =
+            variant == 0 ? VolumeCulling::DepthBounds : VolumeCulling::Hierarchical;
         TiledVolumeStencilOptions options;
         options.culling = culling;
         options.tile_level = level;
+        options.dense_limit = variant == 1 ? 0 : options.dense_limit;
         Stats stats;
         const Image<int32_t> stencil = tiledVolumeStencil(volumes, eye.depth, options, stats);
         size_t differing = 0;
@@ -53,6 +58,7 @@ void expectSameStencils(const Scene& scene, const View& view, VolumeMode mode,
                                  << volumeModeName(mode) << ", "
                                  << (culling == VolumeCulling::Hierarchical ? "hierarchical"
                                                                             : "depth bounds")
+                                 << ", dense limit " << options.dense_limit
                                  << ", tiles " << (1 << level);
       }
   }

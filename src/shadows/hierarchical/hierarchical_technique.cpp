@@ -15,6 +15,7 @@ namespace {
 struct TiledVolumeOptions {
   VolumeMode mode = VolumeMode::Auto;
   int tile_level = 3;  // 8x8 tiles, the thesis's
+  int dense_limit = 2;  // hierarchical only: TiledVolumeStencilOptions::dense_limit
 };
 
 class TiledVolumes final : public PreparedTechnique {
@@ -33,6 +34,8 @@ class TiledVolumes final : public PreparedTechnique {
       TiledVolumeStencilOptions stencil_options;
       stencil_options.culling = culling_;
       stencil_options.tile_level = options_.tile_level;
+      stencil_options.dense_limit =
+          culling_ == VolumeCulling::Hierarchical ? options_.dense_limit : 0;
       stencil_options.simd = context.simd;
       stencil = tiledVolumeStencil(volumes, eye.depth, stencil_options, result.stats);
     }
@@ -54,30 +57,39 @@ TechniqueInfo tiledVolumeTechnique(const char* name, const char* summary, Volume
   info.summary = summary;
   // As `volume`, whose stencil it ends with on every surface pixel: ties only.
   info.traits.covered_mae_bound = 0.001;
-  info.options =
-      OptionTableBuilder<TiledVolumeOptions>()
-          .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
-                  &TiledVolumeOptions::mode,
-                  {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
-                   {"zfail", VolumeMode::ZFail}})
-          .integer(
-              "tile-size", "tile size in pixels, a power of two in 4..32", 4, 32,
-              [](TiledVolumeOptions& o, int64_t v) {
-                PENUMBRA_CHECK((v & (v - 1)) == 0, "--tile-size {} is not a power of two", v);
-                int level = 0;
-                while ((1 << level) < v) ++level;
-                o.tile_level = level;
-              },
-              [](const TiledVolumeOptions& o) { return int64_t(1) << o.tile_level; })
-          .check([](const TiledVolumeOptions& o) {
-            PENUMBRA_CHECK(o.tile_level >= 2 && o.tile_level <= 5,
-                           "tile level {} is outside 2..5 (4 to 32 pixels)", o.tile_level);
-          })
-          .describe([](const TiledVolumeOptions& o) {
-            return fmt::format("{}, {}x{} tiles", volumeModeName(o.mode), 1 << o.tile_level,
-                               1 << o.tile_level);
-          })
-          .build();
+  OptionTableBuilder<TiledVolumeOptions> table;
+  table
+      .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
+              &TiledVolumeOptions::mode,
+              {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
+               {"zfail", VolumeMode::ZFail}})
+      .integer(
+          "tile-size", "tile size in pixels, a power of two in 4..32", 4, 32,
+          [](TiledVolumeOptions& o, int64_t v) {
+            PENUMBRA_CHECK((v & (v - 1)) == 0, "--tile-size {} is not a power of two", v);
+            int level = 0;
+            while ((1 << level) < v) ++level;
+            o.tile_level = level;
+          },
+          [](const TiledVolumeOptions& o) { return int64_t(1) << o.tile_level; });
+  if (culling == VolumeCulling::Hierarchical)
+    table.integer("dense-limit",
+                  "a volume with more triangles per tile than this in a 32x32 bin tile is "
+                  "drawn per pixel there, unclassified (0: always classify)",
+                  &TiledVolumeOptions::dense_limit, 0, 1024);
+  table
+      .check([](const TiledVolumeOptions& o) {
+        PENUMBRA_CHECK(o.tile_level >= 2 && o.tile_level <= 5,
+                       "tile level {} is outside 2..5 (4 to 32 pixels)", o.tile_level);
+      })
+      .describe([culling](const TiledVolumeOptions& o) {
+        std::string text = fmt::format("{}, {}x{} tiles", volumeModeName(o.mode),
+                                       1 << o.tile_level, 1 << o.tile_level);
+        if (culling == VolumeCulling::Hierarchical)
+          text += fmt::format(", dense limit {}", o.dense_limit);
+        return text;
+      });
+  info.options = table.build();
   info.prepare = [culling](const std::any& options, const Scene& scene) {
     return std::make_unique<TiledVolumes>(std::any_cast<const TiledVolumeOptions&>(options),
                                           culling, scene);

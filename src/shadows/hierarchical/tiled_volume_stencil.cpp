@@ -173,14 +173,14 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
 // boundary ones per pixel. Adds the decided counts to `coarse`.
 void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
                       const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
-                      const StencilTarget& target, bool simd, int32_t* coarse, TileWork& work) {
+                      const StencilTarget& target, const TiledVolumeStencilOptions& options,
+                      int32_t* coarse, TileWork& work) {
+  const bool simd = options.simd;
+  const int dense_limit = options.dense_limit;
   const bool zfail = set.zfail[v] != 0;
   const int n = tile.perRow();
-  // Every tile of this volume drawn per pixel (as boundary tiles) when its triangles here
-  // outnumber twice the tiles: a volume of many small polygons (a finely tessellated caster's
-  // silhouette) crosses nearly every tile it reaches, and testing each (triangle, tile) pair
-  // would cost more than the pixels it could save. The stencil is the same either way.
-  const bool dense = last - first > 2 * n * n;
+  // A volume dense here is drawn per pixel (TiledVolumeStencilOptions::dense_limit).
+  const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * n * n;
   const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;
   const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
   uint8_t touched[kMaxCells] = {}, boundary[kMaxCells] = {};
@@ -262,6 +262,9 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // pass, and a polygon covering a whole tile and passing at every pixel of it adds to the
   // tile's count instead (the z-min trivial accept, thesis section 1.5).
   constexpr int kDraw = 1, kWhole = 2;
+  // Boundary tiles also take the depth bounds test (drawDepthBounded).
+  const float bound_lo = set.depth_min[v], bound_hi = set.depth_max[v];
+  const bool near_test = !zfail || !set.may_contain_eye[v];
   // With every tile the volume reaches a boundary tile, its triangles are drawn over their
   // whole rects, tested per bin tile as the per-pixel passes do: outside the touched tiles
   // they cover no pixel with a surface (classifyTileBox found them Outside there).
@@ -283,6 +286,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
               for (int cx = cx0; cx <= cx1 && !any; ++cx) any = boundary[cy * n + cx] != 0;
             if (!any) return 0;
           }
+          if (near_test && zmin > bound_hi) return 0;  // the depth bounds test, as below
+          if (zfail && zmax < bound_lo) return 0;
           switch (depthRuleTiles(t, sub, zfail, zmin, zmax, true)) {
             case DepthRuleTiles::None: return 0;
             case DepthRuleTiles::Some: return kDraw;
@@ -349,7 +354,7 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
       const uint32_t* end = first;
       while (end != last && *end < set.begin[v + 1]) ++end;
       if (hierarchical)
-        drawHierarchical(set, v, first, end, tile, depth, target, options.simd, coarse, w);
+        drawHierarchical(set, v, first, end, tile, depth, target, options, coarse, w);
       else
         drawDepthBounded(set, v, first, end, tile, depth, target, options.simd, w);
       first = end;

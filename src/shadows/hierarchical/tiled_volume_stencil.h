@@ -30,6 +30,12 @@ enum class VolumeCulling { DepthBounds, Hierarchical };
 struct TiledVolumeStencilOptions {
   VolumeCulling culling = VolumeCulling::Hierarchical;
   int tile_level = 3;  // tiles of 2^tile_level pixels, 2..5 (4x4 to the 32x32 bin tiles)
+  // Hierarchical: a volume with more than dense_limit triangles per tile in a bin tile is drawn
+  // per pixel there without classifying its tiles (0: always classified, the thesis's way). A
+  // volume of many small polygons (a finely tessellated caster's silhouette) crosses nearly
+  // every tile it reaches, and testing each (triangle, tile) pair costs more than the pixels
+  // it could save. The stencil is the same either way.
+  int dense_limit = 2;
   bool simd = true;
 };
 
