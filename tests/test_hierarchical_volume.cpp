@@ -293,3 +293,51 @@ TEST(HierarchicalVolume, HandMadeCountersZFailNearSurface) {
 
 }  // namespace
 }  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// A z-pass volume has no light caps, so across a silhouette edge the drawn count changes even
+// where the quad lies wholly in front of the tile's surfaces: a tile such an edge crosses is a
+// boundary tile. Here a single quad (as if the rest of its volume lay off screen) at depth 0.8,
+// over a surface at 0.5, spans pixels [12, 24) x [8, 16); its left edge, x = 12, is a silhouette
+// edge and crosses tile (1,1) (columns 8..15); its other edges lie on tile borders. Per pixel,
+// columns 12..15 of tile (1,1) count +1 and columns 8..11 do not; decided by its sample (8, 8),
+// which the quad does not cover, the whole tile would come out lit.
+TEST(HierarchicalVolume, SilhouetteEdgeMakesABoundaryTile) {
+  HandCase c;
+  c.depth.depth.resize(32, 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) c.depth.depth.at(x, y) = 0.5f;
+  c.depth.buildTileRanges();
+  ClipTriangles tris;
+  auto vertex = [&](float sx, float sy) {
+    return tris.addVertex(vec4(sx / 16.0f - 1.0f, 1.0f - sy / 16.0f, 0.8f, 1.0f));
+  };
+  const uint32_t a = vertex(12, 8), b = vertex(12, 16), cc = vertex(24, 16), d = vertex(24, 8);
+  // Counter-clockwise as the eye sees them (y up in clip space); the first holds the edge a-b.
+  tris.addOwned(a, b, cc, 1, 0, /*silhouette*/ 0, ClipTriangles::kNoOwner);
+  tris.add(a, cc, d, 1, 0);
+  c.volumes.triangles = setupTriangles(tris, 32, 32);
+  ASSERT_EQ(c.volumes.triangles.size(), 2u);
+  ASSERT_EQ(c.volumes.triangles[0].facing, 1);
+  c.volumes.begin = {0, 2};
+  c.volumes.zfail = {0};
+  c.volumes.may_contain_eye = {0};
+  c.volumes.depth_min = {0.8f};
+  c.volumes.depth_max = {0.8f};
+  c.volumes.silhouettes = {ScreenSegment{12.0, 8.0, 12.0, 16.0, false}};
+  Stats per_pixel_stats;
+  const Image<int32_t> expected = runPerPixel(c, per_pixel_stats);
+  ASSERT_EQ(expected.at(11, 10), 0);
+  ASSERT_EQ(expected.at(12, 10), 1);
+  TiledVolumeStencilOptions options;
+  options.dense_limit = 0;
+  Stats s;
+  EXPECT_TRUE(tiledVolumeStencil(c.volumes, c.depth, options, s) == expected);
+  EXPECT_EQ(s.tiles_boundary, 1u) << "tile (1,1)";
+  EXPECT_EQ(s.tiles_shadowed, 1u) << "tile (2,1)";
+}
+
+}  // namespace
+}  // namespace penumbra
