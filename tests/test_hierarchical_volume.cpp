@@ -272,7 +272,7 @@ TEST(HierarchicalVolume, HandMadeCountersZPass) {
 // z-fail with every surface at 0.9, nearer than the whole volume: each pixel's count is the
 // closed volume's sum, zero. Depth bounds (0.2..0.8) reject all four tiles: no pixel. Per pixel,
 // every polygon is behind every surface, so no tile is culled: 4 x 128 = 512 pixels, all written.
-// Hierarchical: both faces behind every tile's box, the sample sees +1 and -1: four lit tiles.
+// Hierarchical: the same depth bounds test, on the bin tile's range, rejects the volume whole.
 TEST(HierarchicalVolume, HandMadeCountersZFailNearSurface) {
   const HandCase c = handCase(true, [](int, int) { return 0.9f; });
   Stats per_pixel_stats;
@@ -286,9 +286,22 @@ TEST(HierarchicalVolume, HandMadeCountersZFailNearSurface) {
   EXPECT_EQ(bounds.stencil_writes, 0u);
   Stats h;
   EXPECT_TRUE(runTiled(c, VolumeCulling::Hierarchical, h, true) == expected);
-  EXPECT_EQ(h.tiles_lit, 4u);
-  EXPECT_EQ(h.tiles_shadowed + h.tiles_boundary, 0u);
+  EXPECT_EQ(h.tiles_tested + h.tiles_lit + h.tiles_shadowed + h.tiles_boundary, 0u)
+      << "the bin tile's range lies nearer than the volume: nothing to classify";
   EXPECT_EQ(h.pixels_rasterized + h.z_reads + h.stencil_writes, 0u);
+  // Where the eye may be inside the volume, that rejection is not allowed: the tiles are
+  // classified, both faces behind every box, and the sample sees +1 and -1: four lit tiles.
+  HandCase eye_inside = c;
+  eye_inside.volumes.may_contain_eye = {1};
+  Stats e;
+  EXPECT_TRUE(runTiled(eye_inside, VolumeCulling::Hierarchical, e, true) == expected);
+  EXPECT_EQ(e.tiles_lit, 4u);
+  EXPECT_EQ(e.tiles_shadowed + e.tiles_boundary, 0u);
+  EXPECT_EQ(e.pixels_rasterized + e.z_reads + e.stencil_writes, 0u);
+  // Depth bounds without their near test: every tile drawn per pixel, as the per-pixel pass.
+  Stats b;
+  EXPECT_TRUE(runTiled(eye_inside, VolumeCulling::DepthBounds, b, true) == expected);
+  EXPECT_EQ(b.pixels_rasterized, 512u);
 }
 
 }  // namespace

@@ -36,8 +36,10 @@ struct Cell {
 
 class BinTile {
  public:
+  // With surface_ranges false, tiles holding background keep the depth buffer's range (z-min
+  // 0) and no depth is read.
   BinTile(const TileBox& box, const DepthBuffer& depth, int level, const float* tile_depth,
-          TileWork& work)
+          bool surface_ranges, TileWork& work)
       : box_(box), level_(level), per_row_(kBinTileSize >> level) {
     const TileDepthRange& range = depth.tileRange(level);
     const int size = 1 << level;
@@ -57,7 +59,7 @@ class BinTile {
         c.zmin = zmin;
         c.sample_x = c.x0;
         c.sample_y = c.y0;
-        if (zmin > 0.0f) continue;
+        if (zmin > 0.0f || !surface_ranges) continue;
         // Background pixels (depth 0, infinity) would stretch the box to infinity, where every
         // volume extruded away from the light reaches: the box is taken over the surface
         // pixels only (the stencil is never read on the background), at the cost of reading
@@ -80,7 +82,8 @@ class BinTile {
       zmax_ = std::max(zmax_, c.zmax);
     }
   }
-  // The depth range of the bin tile's surface pixels: its box holds every cell's.
+  // The depth range of the bin tile's surface pixels (without surface_ranges, z-min 0 where a
+  // tile holds background): its box holds every cell's.
   bool anySurface() const { return any_surface_; }
   float zmin() const { return zmin_; }
   float zmax() const { return zmax_; }
@@ -148,6 +151,9 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // Surfaces nearer than the whole volume: z-pass counts nothing there, z-fail the volume's
   // count at the eye, zero unless the eye may be inside.
   const bool near_test = !zfail || !set.may_contain_eye[v];
+  // The test for the whole bin tile first: when it rejects the volume, no triangle of it is set
+  // up here (forEachCullRect would reject each on the same range).
+  if ((near_test && tile.zmin() > hi) || (zfail && tile.zmax() < lo)) return;
   const TileBox& box = tile.box();
   for (const uint32_t* k = first; k != last; ++k) {
     const SetupTriangle& t = set.triangles[*k];
@@ -183,6 +189,11 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * n * n;
   const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;
   const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
+  // The depth bounds test for the whole bin tile first (drawDepthBounded): surfaces all nearer
+  // than the volume (where that is allowed) or, with z-fail, all farther count nothing from it.
+  if (((!zfail || !set.may_contain_eye[v]) && tile.zmin() > set.depth_max[v]) ||
+      (zfail && tile.zmax() < set.depth_min[v]))
+    return;
   uint8_t touched[kMaxCells] = {}, boundary[kMaxCells] = {};
   int32_t sample[kMaxCells] = {};
   const TileBox& box = tile.box();
@@ -342,9 +353,7 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
     target.y0 = box.y0;
     const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
     // The surface ranges of tiles with background are only needed (and read) by Hierarchical.
-    TileWork scratch;
-    const BinTile tile(box, depth, options.tile_level, tile_depth.data(),
-                       hierarchical ? w : scratch);
+    const BinTile tile(box, depth, options.tile_level, tile_depth.data(), hierarchical, w);
     if (!tile.anySurface()) return;  // only background: the stencil stays 0
     int32_t coarse[kMaxCells] = {};
     // The bin's triangles are in increasing order, so each volume's are one run.
