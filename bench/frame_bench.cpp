@@ -5,6 +5,9 @@
 // peer (bench/peer/) renders with GL z-fail stencil volumes; bench/run_benchmarks.sh quotes the
 // ratio of the two fps.
 //
+// HardShadowFrame/<scene>/<size>/hierarchical-volume: the same frame with `hierarchical-volume`
+// (the same image; per-pixel work only in tiles a volume's boundary crosses), beside it.
+//
 // Technique/columns/640x427/<technique>: renderShadows alone for every light, on an eye pass
 // rendered once outside the loop, so techniques compare on the same basis (the oracle at 1 and
 // 64 rays here; soft-shadow techniques are compared against Technique/.../reference-64).
@@ -57,12 +60,12 @@ class PassTimes {
 };
 
 void hardShadowFrame(benchmark::State& state, const std::string& scene_name, int width,
-                     int height) {
+                     int height, const std::string& technique = "volume") {
   const Scene& scene = benchScene(scene_name);
   FrameOptions options;
   options.width = width;
   options.height = height;
-  options.technique = TechniqueConfig("volume");
+  options.technique = TechniqueConfig(technique);
   PassTimes passes;
   Stats last;
   double seconds = 0.0;
@@ -88,8 +91,14 @@ void hardShadowFrame(benchmark::State& state, const std::string& scene_name, int
   state.counters["silhouette_edges"] = double(last.silhouette_edges);
   state.counters["tiles_culled"] = double(last.tiles_culled);
   state.counters["threads"] = double(workerCount());
-  state.SetLabel(fmt::format("{} {}x{} {} tris {} lights, volume (auto): {:.1f} fps", scene_name,
-                             width, height, scene.triangleCount(), scene.lights.size(), fps));
+  if (technique != "volume") {
+    state.counters["z_reads"] = double(last.z_reads);
+    state.counters["stencil_writes"] = double(last.stencil_writes);
+    state.counters["tiles_boundary"] = double(last.tiles_boundary);
+  }
+  state.SetLabel(fmt::format("{} {}x{} {} tris {} lights, {} (auto): {:.1f} fps", scene_name,
+                             width, height, scene.triangleCount(), scene.lights.size(), technique,
+                             fps));
 }
 
 void technique(benchmark::State& state, const std::string& scene_name, int width, int height,
@@ -145,6 +154,12 @@ bool registerFrameBenchmarks() {
       timed(benchmark::RegisterBenchmark(name.c_str(),
                                          [scene = std::string(scene), size](benchmark::State& s) {
                                            hardShadowFrame(s, scene, size.width, size.height);
+                                         }),
+            0.3);
+      timed(benchmark::RegisterBenchmark((name + "/hierarchical-volume").c_str(),
+                                         [scene = std::string(scene), size](benchmark::State& s) {
+                                           hardShadowFrame(s, scene, size.width, size.height,
+                                                           "hierarchical-volume");
                                          }),
             0.3);
     }

@@ -99,6 +99,7 @@ def summarize(out_dir):
         if parts[0] == "HardShadowFrame":
             scene, size = parts[1], parts[2]
             row = {"scene": scene, "size": size, "fps": counter(runs, "fps"),
+                   "technique": parts[3] if len(parts) > 3 else "volume",
                    "scene_triangles": runs[0].get("scene_triangles"),
                    "pass_ms": {p: counter(runs, p + "_ms")["median"]
                                for p in PASS_ORDER if counter(runs, p + "_ms")}}
@@ -144,9 +145,19 @@ def summarize(out_dir):
         if key in oracle and not t["technique"].startswith("reference"):
             t["oracle_frame_over_this"] = oracle[key] / t["frame_ms"]["median"]
 
+    # Other techniques' hard-shadow frames (HardShadowFrame/<scene>/<size>/<technique>) against
+    # the volume frame of the same scene and size, medians of the same session.
+    volume_fps = {(r["scene"], r["size"]): r["fps"]["median"] for r in summary["hard_shadow_frames"]
+                  if r["technique"] == "volume"}
+    for r in summary["hard_shadow_frames"]:
+        base = volume_fps.get((r["scene"], r["size"]))
+        if base and r["technique"] != "volume":
+            r["fps_vs_volume"] = r["fps"]["median"] / base
+
     order = {"columns": 0, "spheres": 1, "fractal": 2}
     summary["hard_shadow_frames"].sort(
-        key=lambda r: (order.get(r["scene"], 9), int(r["size"].split("x")[0])))
+        key=lambda r: (order.get(r["scene"], 9), int(r["size"].split("x")[0]),
+                       r["technique"] != "volume", r["technique"]))
     summary["eye_pass"].sort(key=lambda e: (order.get(e["scene"], 9) == 1,
                                             int(e["size"].split("x")[0]), e["kernel"] != "simd"))
 
@@ -183,7 +194,10 @@ def to_markdown(s, have_peer):
             ratio = f'{r["ratio"]:.2f}x'
         else:
             theirs, ratio = "not run", "-"
-        lines.append(f'| {r["scene"]} | {r["size"]} | {ours} | {passes} | {theirs} | {ratio} |')
+        scene = r["scene"] if r["technique"] == "volume" else f'{r["scene"]}, {r["technique"]}'
+        if "fps_vs_volume" in r:
+            ours += f' ({r["fps_vs_volume"]:.2f}x volume)'
+        lines.append(f'| {scene} | {r["size"]} | {ours} | {passes} | {theirs} | {ratio} |')
     if have_peer and "peer" in s:
         p = s["peer"]
         lines += ["", f'Peer: {p.get("gl_renderer")}, {p.get("gl_version")}; z-fail stencil '
@@ -229,7 +243,7 @@ def to_markdown(s, have_peer):
 
 
 def plot(s, path):
-    rows = s["hard_shadow_frames"]
+    rows = [r for r in s["hard_shadow_frames"] if r.get("technique", "volume") == "volume"]
     if not rows:
         return
     import matplotlib

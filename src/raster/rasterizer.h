@@ -29,7 +29,8 @@ struct StencilOptions {
   int cull_level = 5;  // culling tiles of 2^cull_level pixels (1..8); 5 = the bin tiles
   // With tile_culling: a polygon that covers a whole culling tile and passes the depth rule at
   // every pixel of it (z-min and z-max prove it) adds to one coarse value per tile instead of
-  // to each pixel (two-level stencil, Aila 2005, section 4.3; raster/tile_offsets.h). The
+  // to each pixel (the z-min trivial accept of Aila's 2005 thesis, section 1.5, into the
+  // two-level storage its section 4.3 proposes; raster/tile_offsets.h). The
   // stencil ends the same; z_reads and stencil_writes fall, tiles_accepted counts such tiles.
   bool two_level = true;
   // The eye pass's primitive ids, needed when polygons have owners (ClipTriangles::owners):

@@ -1,7 +1,9 @@
 #pragma once
-// The coarse level of a two-level stencil (Aila's 2005 thesis, section 4.3, publication P2):
-// one value per culling tile of a bin tile, for the contributions of shadow-volume polygons that
-// cover a whole culling tile and pass the depth test at every one of its pixels. Such a
+// The coarse level of a two-level stencil (the storage Aila's 2005 thesis proposes in section
+// 4.3, publication P2): one value per culling tile of a bin tile, for the contributions of
+// shadow-volume polygons that cover a whole culling tile and pass the depth test at every one
+// of its pixels (the z-min trivial accept of the thesis's section 1.5, not section 4.3's
+// per-volume tile classification, which is shadows/hierarchical/). Such a
 // polygon adds the same value to every pixel of the tile, so it adds it once, here, instead of
 // reading each pixel's depth and writing its stencil; the cells are added to the pixels once,
 // when the bin tile's copy is stored. Integer addition (wrapping, for the LI buffer) does not

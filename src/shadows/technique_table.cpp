@@ -6,6 +6,7 @@
 #include "shadows/coverage/coverage_technique.h"
 #include "shadows/exact/exact_technique.h"
 #include "shadows/heckbert_herf/heckbert_herf_technique.h"
+#include "shadows/hierarchical/hierarchical_technique.h"
 #include "shadows/mask/mask_technique.h"
 #include "shadows/pcss/pcss_technique.h"
 #include "shadows/reference/reference_technique.h"
@@ -18,6 +19,8 @@ namespace penumbra {
 std::vector<TechniqueInfo> builtinTechniques() {
   return {
       volumeTechnique(),
+      depthBoundsVolumeTechnique(),
+      hierarchicalVolumeTechnique(),
       wedgeTechnique(WedgeAlgorithm::ThreePass),
       wedgeTechnique(WedgeAlgorithm::SinglePass),
       wedgeTechnique(WedgeAlgorithm::Original2002),

@@ -20,6 +20,11 @@ namespace penumbra {
   X(tiles_culled, "of those, the ones culled before any pixel")                                  \
   X(tiles_accepted, "of the others, the ones a shadow-volume polygon covers and passes whole: "  \
                     "one coarse stencil write, no pixel")                                        \
+  /* Hierarchical shadow volumes (thesis section 4.3): (volume, tile) pairs with a surface */    \
+  /* that some triangle of the volume overlaps on screen, by how the tile was classified. */     \
+  X(tiles_lit, "(volume, tile) pairs no volume triangle crosses, outside the volume")            \
+  X(tiles_shadowed, "(volume, tile) pairs no volume triangle crosses, inside the volume")        \
+  X(tiles_boundary, "(volume, tile) pairs a volume triangle crosses: drawn per pixel")           \
   X(silhouette_edges, "silhouette edges seen from the light centre")                             \
   X(wedges, "penumbra wedges built")                                                             \
   X(triangles, "triangles set up for rasterization (after clipping)")                            \

@@ -1,0 +1,117 @@
+#include "shadows/hierarchical/hierarchical_technique.h"
+
+#include <fmt/format.h>
+
+#include "core/timer.h"
+#include "shadows/facing_away.h"
+#include "shadows/hierarchical/tiled_volume_stencil.h"
+#include "shadows/hierarchical/volume_set.h"
+#include "shadows/volume_options.h"
+
+namespace penumbra {
+namespace {
+
+// The options of both techniques: how volumes count, as `volume`, and the tile size.
+struct TiledVolumeOptions {
+  VolumeMode mode = VolumeMode::Auto;
+  int tile_level = 3;  // 8x8 tiles, the thesis's
+  int dense_limit = 2;  // hierarchical only: TiledVolumeStencilOptions::dense_limit
+};
+
+class TiledVolumes final : public PreparedTechnique {
+ public:
+  TiledVolumes(const TiledVolumeOptions& options, VolumeCulling culling, const Scene& scene)
+      : options_(options), culling_(culling), scene_(scene) {}
+
+  TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
+                         const RenderContext& context) const override {
+    TechniqueResult result;
+    const ShadowVolumeSet volumes =
+        buildShadowVolumes(scene_, light.center, view, eye, options_.mode, result.stats);
+    Image<int32_t> stencil;
+    {
+      PassTimer timer(result.stats, "volumes");
+      TiledVolumeStencilOptions stencil_options;
+      stencil_options.culling = culling_;
+      stencil_options.tile_level = options_.tile_level;
+      stencil_options.dense_limit =
+          culling_ == VolumeCulling::Hierarchical ? options_.dense_limit : 0;
+      stencil_options.simd = context.simd;
+      stencil = tiledVolumeStencil(volumes, eye.depth, stencil_options, result.stats);
+    }
+    PassTimer timer(result.stats, "resolve");
+    resolveVisibility(scene_, light, view, eye, result.visibility,
+                      [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
+    return result;
+  }
+
+ private:
+  TiledVolumeOptions options_;
+  VolumeCulling culling_;
+  const Scene& scene_;
+};
+
+TechniqueInfo tiledVolumeTechnique(const char* name, const char* summary, VolumeCulling culling) {
+  TechniqueInfo info;
+  info.name = name;
+  info.summary = summary;
+  // As `volume`, whose stencil it ends with on every surface pixel: ties only.
+  info.traits.covered_mae_bound = 0.001;
+  OptionTableBuilder<TiledVolumeOptions> table;
+  table
+      .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
+              &TiledVolumeOptions::mode,
+              {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
+               {"zfail", VolumeMode::ZFail}})
+      .integer(
+          "tile-size", "tile size in pixels, a power of two in 4..32", 4, 32,
+          [](TiledVolumeOptions& o, int64_t v) {
+            PENUMBRA_CHECK((v & (v - 1)) == 0, "--tile-size {} is not a power of two", v);
+            int level = 0;
+            while ((1 << level) < v) ++level;
+            o.tile_level = level;
+          },
+          [](const TiledVolumeOptions& o) { return int64_t(1) << o.tile_level; });
+  if (culling == VolumeCulling::Hierarchical)
+    table.integer("dense-limit",
+                  "a volume with more triangles per tile than this in a 32x32 bin tile is "
+                  "drawn per pixel there, unclassified (0: always classify)",
+                  &TiledVolumeOptions::dense_limit, 0, 1024);
+  table
+      .check([](const TiledVolumeOptions& o) {
+        PENUMBRA_CHECK(o.tile_level >= 2 && o.tile_level <= 5,
+                       "tile level {} is outside 2..5 (4 to 32 pixels)", o.tile_level);
+      })
+      .describe([culling](const TiledVolumeOptions& o) {
+        std::string text = fmt::format("{}, {}x{} tiles", volumeModeName(o.mode),
+                                       1 << o.tile_level, 1 << o.tile_level);
+        if (culling == VolumeCulling::Hierarchical)
+          text += fmt::format(", dense limit {}", o.dense_limit);
+        return text;
+      });
+  info.options = table.build();
+  info.prepare = [culling](const std::any& options, const Scene& scene) {
+    return std::make_unique<TiledVolumes>(std::any_cast<const TiledVolumeOptions&>(options),
+                                          culling, scene);
+  };
+  return info;
+}
+
+}  // namespace
+
+TechniqueInfo depthBoundsVolumeTechnique() {
+  return tiledVolumeTechnique(
+      "depth-bounds-volume",
+      "hard shadow volumes limited to each volume's depth bounds (Aila 2005, section 2.2)",
+      VolumeCulling::DepthBounds);
+}
+
+TechniqueInfo hierarchicalVolumeTechnique() {
+  return tiledVolumeTechnique(
+      "hierarchical-volume",
+      "hard shadow volumes drawn per pixel only in tiles a volume's boundary crosses "
+      "(Aila 2005, section 4.3)",
+      VolumeCulling::Hierarchical);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,403 @@
+#include "shadows/hierarchical/tiled_volume_stencil.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/parallel.h"
+#include "raster/binning.h"
+#include "raster/cull_tiles.h"
+#include "raster/fixed_point.h"
+#include "raster/tile_copy.h"
+#include "raster/tile_kernels.h"
+#include "shadows/hierarchical/tile_box_test.h"
+
+namespace penumbra {
+namespace {
+
+constexpr int kMaxCells = (kBinTileSize / 4) * (kBinTileSize / 4);  // 4x4 tiles
+
+struct TileWork {
+  KernelCounts kernel;
+  CullTally tally;
+  uint64_t z_reads = 0;  // beyond the kernels': surface ranges of tiles with background
+  uint64_t writes = 0;   // beyond the kernels': per-tile counts and their addition to pixels
+  uint64_t lit = 0, shadowed = 0, boundary = 0;
+  uint64_t accepted = 0;  // boundary tiles a polygon covered and passed whole
+};
+
+// A culling tile of a bin tile: its pixels, and the depth range and a sample pixel of its
+// surface pixels (none: only background, nothing to shadow).
+struct Cell {
+  int x0, y0, x1, y1;
+  bool surface = false;
+  float zmin = 0.0f, zmax = 0.0f;
+  int sample_x = 0, sample_y = 0;
+};
+
+class BinTile {
+ public:
+  // With surface_ranges false, tiles holding background keep the depth buffer's range (z-min
+  // 0) and no depth is read.
+  BinTile(const TileBox& box, const DepthBuffer& depth, int level, const float* tile_depth,
+          bool surface_ranges, TileWork& work)
+      : box_(box), level_(level), per_row_(kBinTileSize >> level) {
+    const TileDepthRange& range = depth.tileRange(level);
+    const int size = 1 << level;
+    for (int cy = 0; cy < per_row_; ++cy)
+      for (int cx = 0; cx < per_row_; ++cx) {
+        Cell& c = cells_[cy * per_row_ + cx];
+        c.x0 = box.x0 + cx * size;
+        c.y0 = box.y0 + cy * size;
+        c.x1 = std::min(box.x1, c.x0 + size - 1);
+        c.y1 = std::min(box.y1, c.y0 + size - 1);
+        if (c.x0 > box.x1 || c.y0 > box.y1) continue;
+        const float zmin = range.zmin.at(c.x0 >> level, c.y0 >> level);
+        const float zmax = range.zmax.at(c.x0 >> level, c.y0 >> level);
+        if (zmax <= 0.0f) continue;  // only background
+        c.surface = true;
+        c.zmax = zmax;
+        c.zmin = zmin;
+        c.sample_x = c.x0;
+        c.sample_y = c.y0;
+        if (zmin > 0.0f || !surface_ranges) continue;
+        // Background pixels (depth 0, infinity) would stretch the box to infinity, where every
+        // volume extruded away from the light reaches: the box is taken over the surface
+        // pixels only (the stencil is never read on the background), at the cost of reading
+        // the tile's depths. The sample is the first surface pixel.
+        c.zmin = zmax;
+        bool found = false;
+        for (int y = c.y0; y <= c.y1; ++y)
+          for (int x = c.x0; x <= c.x1; ++x) {
+            const float d = tile_depth[(y - box.y0) * kBinTileSize + (x - box.x0)];
+            ++work.z_reads;
+            if (d <= 0.0f) continue;
+            c.zmin = std::min(c.zmin, d);
+            if (!found) c.sample_x = x, c.sample_y = y, found = true;
+          }
+      }
+    for (const Cell& c : cells_) {
+      if (!c.surface) continue;
+      any_surface_ = true;
+      zmin_ = std::min(zmin_, c.zmin);
+      zmax_ = std::max(zmax_, c.zmax);
+    }
+  }
+  // The depth range of the bin tile's surface pixels (without surface_ranges, z-min 0 where a
+  // tile holds background): its box holds every cell's.
+  bool anySurface() const { return any_surface_; }
+  float zmin() const { return zmin_; }
+  float zmax() const { return zmax_; }
+  int perRow() const { return per_row_; }
+  int level() const { return level_; }
+  const TileBox& box() const { return box_; }
+  const Cell& cell(int cx, int cy) const { return cells_[cy * per_row_ + cx]; }
+  // Cells the rect's pixels touch, local to the bin tile.
+  void cellRange(const TileEdges& e, int& cx0, int& cy0, int& cx1, int& cy1) const {
+    cx0 = (e.x0 - box_.x0) >> level_;
+    cx1 = (e.x1 - box_.x0) >> level_;
+    cy0 = (e.y0 - box_.y0) >> level_;
+    cy1 = (e.y1 - box_.y0) >> level_;
+  }
+
+ private:
+  TileBox box_;
+  int level_, per_row_;
+  bool any_surface_ = false;
+  float zmin_ = 1.0f, zmax_ = 0.0f;
+  Cell cells_[kMaxCells];
+};
+
+// True when the segment may meet the tile of pixels [x0, x1] x [y0, y1] (its pixel centres'
+// rectangle, widened by 1/8 pixel for the snapping of the drawn edge, 1/32 pixel at most):
+// Liang-Barsky clipping of the segment to that rectangle.
+bool segmentMeetsTile(const ScreenSegment& s, int x0, int y0, int x1, int y1) {
+  if (s.anywhere) return true;
+  constexpr double kSlack = 0.125;
+  const double lo[2] = {x0 + 0.5 - kSlack, y0 + 0.5 - kSlack};
+  const double hi[2] = {x1 + 0.5 + kSlack, y1 + 0.5 + kSlack};
+  const double p[2] = {s.x0, s.y0}, d[2] = {s.x1 - s.x0, s.y1 - s.y0};
+  double t0 = 0.0, t1 = 1.0;
+  for (int a = 0; a < 2; ++a) {
+    if (d[a] == 0.0) {
+      if (p[a] < lo[a] || p[a] > hi[a]) return false;
+      continue;
+    }
+    double ta = (lo[a] - p[a]) / d[a], tb = (hi[a] - p[a]) / d[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+struct Drawn {
+  int32_t contribution;
+  DepthRule rule;
+};
+
+Drawn drawn(const SetupTriangle& t) {
+  const bool zfail = (t.flags & kZFail) != 0;
+  return {t.payload * t.facing * (zfail ? -1 : 1), zfail ? DepthRule::NotCloser : DepthRule::Closer};
+}
+
+// Depth bounds: the volume's triangles drawn per pixel in the tiles that neither the ordinary
+// depth-rule test (rasterizer.cpp: depthRuleTiles) nor the volume's bounds reject.
+void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
+                      const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
+                      const StencilTarget& target, bool simd, TileWork& work) {
+  const bool zfail = set.zfail[v] != 0;
+  const float lo = set.depth_min[v], hi = set.depth_max[v];
+  // Surfaces nearer than the whole volume: z-pass counts nothing there, z-fail the volume's
+  // count at the eye, zero unless the eye may be inside.
+  const bool near_test = !zfail || !set.may_contain_eye[v];
+  // The test for the whole bin tile first: when it rejects the volume, no triangle of it is set
+  // up here (forEachCullRect would reject each on the same range).
+  if ((near_test && tile.zmin() > hi) || (zfail && tile.zmax() < lo)) return;
+  const TileBox& box = tile.box();
+  for (const uint32_t* k = first; k != last; ++k) {
+    const SetupTriangle& t = set.triangles[*k];
+    TileEdges e;
+    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    const Drawn d = drawn(t);
+    forEachCullRect(
+        t, e, depth, tile.level(),
+        [&](const TileEdges& sub, float zmin, float zmax) {
+          if (near_test && zmin > hi) return 0;  // every surface nearer than the volume
+          if (zfail && zmax < lo) return 0;    // every surface farther than the volume
+          return depthRuleTiles(t, sub, zfail, zmin, zmax, false) == DepthRuleTiles::None ? 0
+                                                                                         : 1;
+        },
+        [&](const TileEdges& rect, int) {
+          stencilKernel(rect, d.contribution, d.rule, target, work.kernel, simd);
+        },
+        work.tally);
+  }
+}
+
+// Hierarchical: classify the volume's tiles, decide the inner ones by their sample, draw the
+// boundary ones per pixel. Adds the decided counts to `coarse`.
+void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
+                      const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
+                      const StencilTarget& target, const TiledVolumeStencilOptions& options,
+                      int32_t* coarse, TileWork& work) {
+  const bool simd = options.simd;
+  const int dense_limit = options.dense_limit;
+  const bool zfail = set.zfail[v] != 0;
+  const int n = tile.perRow();
+  // A volume dense here is drawn per pixel (TiledVolumeStencilOptions::dense_limit).
+  const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * n * n;
+  const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;
+  const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
+  // The depth bounds test for the whole bin tile first (drawDepthBounded): surfaces all nearer
+  // than the volume (where that is allowed) or, with z-fail, all farther count nothing from it.
+  if (((!zfail || !set.may_contain_eye[v]) && tile.zmin() > set.depth_max[v]) ||
+      (zfail && tile.zmax() < set.depth_min[v]))
+    return;
+  uint8_t touched[kMaxCells] = {}, boundary[kMaxCells] = {};
+  int32_t sample[kMaxCells] = {};
+  const TileBox& box = tile.box();
+  for (const uint32_t* k = first; k != last; ++k) {
+    const SetupTriangle& t = set.triangles[*k];
+    TileEdges e;
+    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    const int32_t contribution = drawn(t).contribution;
+    // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes
+    // where the quad is counted (Front): such a tile is decided per pixel.
+    const ScreenSegment* silhouette =
+        !zfail && t.owners[0] != ClipTriangles::kNoOwner ? &set.silhouettes[t.owners[0]] : nullptr;
+    auto silhouetteMeets = [&](int x0, int y0, int x1, int y1) {
+      return silhouette && segmentMeetsTile(*silhouette, x0, y0, x1, y1);
+    };
+    int cx0, cy0, cx1, cy1;
+    tile.cellRange(e, cx0, cy0, cx1, cy1);
+    // The triangle against the box of the whole rect's pixels and the bin tile's surface range
+    // first: each cell's box lies inside it, so an answer other than Crossing holds for every
+    // cell (and a cell is then classified without a test of its own: the sample decides).
+    TileBoxClass whole = TileBoxClass::Crossing;
+    if (!per_pixel_only && (cx0 != cx1 || cy0 != cy1)) {
+      ++work.tally.tested;
+      whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
+      if (whole == TileBoxClass::Outside) {
+        ++work.tally.culled;
+        continue;
+      }
+      if (whole == TileBoxClass::Front && silhouetteMeets(e.x0, e.y0, e.x1, e.y1))
+        whole = TileBoxClass::Crossing;  // decide tile by tile
+    }
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        const int i = cy * n + cx;
+        const Cell& c = tile.cell(cx, cy);
+        if (!c.surface || boundary[i]) continue;
+        if (per_pixel_only) {
+          touched[i] = boundary[i] = 1;
+          continue;
+        }
+        TileBoxClass cls = whole;
+        if (cls == TileBoxClass::Crossing) {
+          ++work.tally.tested;
+          cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
+        }
+        if (cls == TileBoxClass::Outside) {
+          ++work.tally.culled;
+          continue;
+        }
+        touched[i] = 1;
+        if (cls == TileBoxClass::Crossing ||
+            (cls == TileBoxClass::Front && silhouetteMeets(c.x0, c.y0, c.x1, c.y1))) {
+          boundary[i] = 1;
+        } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
+          sample[i] += contribution;
+        }
+      }
+  }
+  bool any_boundary = false, any_decided = false;
+  for (int i = 0; i < n * n; ++i) {
+    if (!touched[i]) continue;
+    any_decided |= !boundary[i];
+    if (boundary[i]) {
+      ++work.boundary;
+      any_boundary = true;
+    } else if (sample[i] != 0) {
+      ++work.shadowed;
+      ++work.writes;  // the per-tile count
+      coarse[i] += sample[i];
+    } else {
+      ++work.lit;
+    }
+  }
+  if (!any_boundary) return;
+  // The boundary tiles drawn per pixel as the per-pixel passes draw (rasterizer.cpp): the
+  // depth-rule test per tile from its z-min and z-max culls the tiles no pixel of which can
+  // pass, and a polygon covering a whole tile and passing at every pixel of it adds to the
+  // tile's count instead (the z-min trivial accept, thesis section 1.5).
+  constexpr int kDraw = 1, kWhole = 2;
+  // Boundary tiles also take the depth bounds test (drawDepthBounded).
+  const float bound_lo = set.depth_min[v], bound_hi = set.depth_max[v];
+  const bool near_test = !zfail || !set.may_contain_eye[v];
+  // With every tile the volume reaches a boundary tile, its triangles are drawn over their
+  // whole rects, tested per bin tile as the per-pixel passes do: outside the touched tiles
+  // they cover no pixel with a surface (classifyTileBox found them Outside there).
+  const int level = any_decided ? tile.level() : kBinTileLevel;
+  for (const uint32_t* k = first; k != last; ++k) {
+    const SetupTriangle& t = set.triangles[*k];
+    TileEdges e;
+    // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
+    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    const Drawn d = drawn(t);
+    forEachCullRect(
+        t, e, depth, level,
+        [&](const TileEdges& sub, float zmin, float zmax) {
+          if (any_decided) {
+            int cx0, cy0, cx1, cy1;
+            tile.cellRange(sub, cx0, cy0, cx1, cy1);
+            bool any = false;
+            for (int cy = cy0; cy <= cy1 && !any; ++cy)
+              for (int cx = cx0; cx <= cx1 && !any; ++cx) any = boundary[cy * n + cx] != 0;
+            if (!any) return 0;
+          }
+          if (near_test && zmin > bound_hi) return 0;  // the depth bounds test, as below
+          if (zfail && zmax < bound_lo) return 0;
+          switch (depthRuleTiles(t, sub, zfail, zmin, zmax, true)) {
+            case DepthRuleTiles::None: return 0;
+            case DepthRuleTiles::Some: return kDraw;
+            case DepthRuleTiles::All: return kDraw | kWhole;
+          }
+          return kDraw;
+        },
+        [&](const TileEdges& rect, int code) {
+          if (!(code & kWhole)) {
+            stencilKernel(rect, d.contribution, d.rule, target, work.kernel, simd);
+            return;
+          }
+          int cx0, cy0, cx1, cy1;
+          tile.cellRange(rect, cx0, cy0, cx1, cy1);
+          for (int cy = cy0; cy <= cy1; ++cy)
+            for (int cx = cx0; cx <= cx1; ++cx) {
+              coarse[cy * n + cx] += d.contribution;
+              ++work.writes;
+              ++work.accepted;
+            }
+        },
+        work.tally, kWhole);
+  }
+}
+
+TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
+  const int tx = int(tile % size_t(bins.tiles_x)), ty = int(tile / size_t(bins.tiles_x));
+  const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
+  return {x0, y0, std::min(width, x0 + kBinTileSize) - 1, std::min(height, y0 + kBinTileSize) - 1};
+}
+
+}  // namespace
+
+Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer& depth,
+                                  const TiledVolumeStencilOptions& options, Stats& stats) {
+  PENUMBRA_CHECK(options.tile_level >= 2 && options.tile_level <= kBinTileLevel,
+                 "tile level {} is outside 2..{}", options.tile_level, kBinTileLevel);
+  const int width = depth.width(), height = depth.height();
+  Image<int32_t> stencil(width, height, 0);
+  const TileBins bins = binTriangles(set.triangles, width, height);
+  std::vector<TileWork> work(bins.tileCount());
+  parallelFor(bins.tileCount(), [&](size_t index) {
+    const uint32_t* first = bins.triangles.data() + bins.offsets[index];
+    const uint32_t* last = bins.triangles.data() + bins.offsets[index + 1];
+    if (first == last) return;
+    TileWork& w = work[index];
+    const TileBox box = binTileBox(bins, index, width, height);
+    TileCopy<float> tile_depth(depth.depth, box);
+    TileCopy<int32_t> tile_stencil(0);
+    StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};
+    target.x0 = box.x0;
+    target.y0 = box.y0;
+    const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
+    // The surface ranges of tiles with background are only needed (and read) by Hierarchical.
+    const BinTile tile(box, depth, options.tile_level, tile_depth.data(), hierarchical, w);
+    if (!tile.anySurface()) return;  // only background: the stencil stays 0
+    int32_t coarse[kMaxCells] = {};
+    // The bin's triangles are in increasing order, so each volume's are one run.
+    size_t v = 0;
+    while (first != last) {
+      while (*first >= set.begin[v + 1]) ++v;
+      const uint32_t* end = first;
+      while (end != last && *end < set.begin[v + 1]) ++end;
+      if (hierarchical)
+        drawHierarchical(set, v, first, end, tile, depth, target, options, coarse, w);
+      else
+        drawDepthBounded(set, v, first, end, tile, depth, target, options.simd, w);
+      first = end;
+    }
+    if (hierarchical) {
+      const int n = tile.perRow();
+      for (int cy = 0; cy < n; ++cy)
+        for (int cx = 0; cx < n; ++cx) {
+          const int32_t sum = coarse[cy * n + cx];
+          if (sum == 0) continue;
+          const Cell& c = tile.cell(cx, cy);
+          for (int y = c.y0; y <= c.y1; ++y)
+            for (int x = c.x0; x <= c.x1; ++x) {
+              const size_t i = size_t(y - box.y0) * kBinTileSize + size_t(x - box.x0);
+              if (tile_depth.data()[i] <= 0.0f) continue;  // background keeps 0
+              tile_stencil.data()[i] += sum;
+              ++w.writes;
+            }
+        }
+    }
+    tile_stencil.storeTo(stencil, box);
+  });
+  for (const TileWork& w : work) {
+    stats.pixels_rasterized += w.kernel.covered;
+    stats.z_reads += w.kernel.covered + w.z_reads;
+    stats.stencil_writes += w.kernel.writes + w.writes;
+    stats.tiles_tested += w.tally.tested;
+    stats.tiles_culled += w.tally.culled;
+    stats.tiles_lit += w.lit;
+    stats.tiles_shadowed += w.shadowed;
+    stats.tiles_boundary += w.boundary;
+    stats.tiles_accepted += w.accepted;
+  }
+  return stencil;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,50 @@
+#pragma once
+// The hard shadow volumes' stencil drawn volume by volume, with one of two ways of drawing fewer
+// pixels than the per-pixel passes (shadows/volume/shadow_stencil.cpp), both ending with the
+// same stencil on every pixel that shows a surface:
+//
+// DepthBounds (thesis section 2.2, Figure 2.3; Nvidia's UltraShadow): each volume's depth range;
+//   a volume triangle skips the tiles whose surfaces all lie farther than the volume, with
+//   z-fail (no polygon is behind them), and those whose surfaces all lie nearer than it (no
+//   polygon is in front: z-pass counts nothing; all are behind: z-fail counts the volume's
+//   count at the eye, zero unless the eye may be inside, when the test is left out). Decided per
+//   tile from its z-min and z-max, as the hardware's coarse depth test would; surviving tiles
+//   draw every covered pixel. Far bounds reach infinity (depth 0) for every volume extruded
+//   there, so the far test only helps volumes whose extrusion the guard band clipped.
+// Hierarchical (thesis section 4.3, publication P2): per volume, each tile whose box (its pixel
+//   centres times its surfaces' depth range) no triangle of the volume crosses
+//   (tile_box_test.h) is inside or outside the volume as a whole: one sample pixel decides it,
+//   from the triangles wholly in front of the box (z-pass) or wholly behind it (z-fail), by
+//   coverage alone, and the result goes to a per-tile count (the coarse level of the two-level
+//   stencil of section 4.3) that is added to the tile's surface pixels once. Only boundary
+//   tiles are drawn per pixel.
+#include "core/image.h"
+#include "core/stats.h"
+#include "raster/depth_buffer.h"
+#include "shadows/hierarchical/volume_set.h"
+
+namespace penumbra {
+
+enum class VolumeCulling { DepthBounds, Hierarchical };
+
+struct TiledVolumeStencilOptions {
+  VolumeCulling culling = VolumeCulling::Hierarchical;
+  int tile_level = 3;  // tiles of 2^tile_level pixels, 2..5 (4x4 to the 32x32 bin tiles)
+  // Hierarchical: a volume with more than dense_limit triangles per tile in a bin tile is drawn
+  // per pixel there without classifying its tiles (0: always classified, the thesis's way). A
+  // volume of many small polygons (a finely tessellated caster's silhouette) crosses nearly
+  // every tile it reaches, and testing each (triangle, tile) pair costs more than the pixels
+  // it could save. The stencil is the same either way.
+  int dense_limit = 2;
+  bool simd = true;
+};
+
+// Counts pixels_rasterized and z_reads (covered pixels drawn, plus the depth reads that find the
+// surface range of tiles holding background), stencil_writes (per pixel, one per per-tile count
+// written, and one per surface pixel a non-zero per-tile count is added to), tiles_tested and
+// tiles_culled ((triangle, tile) pairs tested), and for Hierarchical tiles_lit, tiles_shadowed
+// and tiles_boundary. Background pixels keep stencil 0, as in the per-pixel passes.
+Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& volumes, const DepthBuffer& depth,
+                                  const TiledVolumeStencilOptions& options, Stats& stats);
+
+}  // namespace penumbra

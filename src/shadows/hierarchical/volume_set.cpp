@@ -1,0 +1,79 @@
+#include "shadows/hierarchical/volume_set.h"
+
+#include <algorithm>
+
+#include "core/timer.h"
+#include "shadows/caster_volume.h"
+
+namespace penumbra {
+namespace {
+
+// The projected segment between two clip-space points (core/view.h conventions).
+ScreenSegment screenSegment(const vec4& a, const vec4& b, const View& view) {
+  ScreenSegment s{};
+  const dvec4 p(a), q(b);
+  if (!(p.w - p.z >= 0.0 && q.w - q.z >= 0.0 && p.w > 0.0 && q.w > 0.0)) {
+    s.anywhere = true;
+    return s;
+  }
+  s.x0 = (p.x / p.w * 0.5 + 0.5) * view.width;
+  s.y0 = (0.5 - p.y / p.w * 0.5) * view.height;
+  s.x1 = (q.x / q.w * 0.5 + 0.5) * view.width;
+  s.y1 = (0.5 - q.y / q.w * 0.5) * view.height;
+  s.anywhere = false;
+  return s;
+}
+
+}  // namespace
+
+ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const View& view,
+                                   const EyeBuffers& eye, VolumeMode mode, Stats& stats) {
+  PassTimer timer(stats, "silhouette");
+  ShadowVolumeSet set;
+  set.begin.push_back(0);
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    CasterVolume volume =
+        casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto);
+    stats.silhouette_edges += volume.silhouette.edges.size();
+    // The same polygons, in the same order and vertex order, as the per-pixel stencil's
+    // (shadow_stencil.cpp), so every pixel a volume polygon reaches gets bit-identical edge
+    // and depth values.
+    ClipTriangles polygons(eye.clip_vertices);
+    appendExtrudedVertices(mesh, centre, view, volume, polygons);
+    const uint32_t finite = volume.finite, infinite = volume.infinite;
+    const uint8_t flags = volume.zfail ? kZFail : 0;
+    for (const SilhouetteEdge& e : volume.silhouette.edges) {
+      uint32_t segment = ClipTriangles::kNoOwner;
+      if (!volume.zfail) {
+        segment = uint32_t(set.silhouettes.size());
+        set.silhouettes.push_back(screenSegment(eye.clip_vertices[finite + e.v1],
+                                                eye.clip_vertices[finite + e.v0], view));
+      }
+      polygons.addOwned(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags,
+                        segment, ClipTriangles::kNoOwner);
+      polygons.add(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags);
+    }
+    // z-pass: caps are never in front of a visible point (volume_technique.cpp).
+    if (volume.zfail)
+      forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
+        polygons.add(a, b, c, weight, flags);
+      });
+    std::vector<SetupTriangle> setup = setupTriangles(polygons, view.width, view.height);
+    stats.triangles += setup.size();
+    float lo = 1.0f, hi = 0.0f;
+    for (const SetupTriangle& t : setup) {
+      lo = std::min(lo, t.depth_min);
+      hi = std::max(hi, t.depth_max);
+    }
+    set.triangles.insert(set.triangles.end(), setup.begin(), setup.end());
+    set.begin.push_back(uint32_t(set.triangles.size()));
+    set.zfail.push_back(volume.zfail);
+    set.may_contain_eye.push_back(mayContainNearPlane(view, centre, mesh.bounds()));
+    set.depth_min.push_back(lo);
+    set.depth_max.push_back(hi);
+  }
+  return set;
+}
+
+}  // namespace penumbra
