@@ -72,6 +72,49 @@ TEST(CoverageArea, ExactAreaMatchesDenseSamplingOfTheLight) {
   EXPECT_GE(nonzero, 6) << "too few segments crossed the light to test anything";
 }
 
+// The edge term restricted to a half-plane (the visible surface's own plane cutting the light:
+// insideFractionInHalfPlane) against dense sampling of the light inside that half-plane, and,
+// with a half-plane holding the whole light, against the unrestricted term. A clip or sector on
+// the wrong side misses by far more than 1e-4 of the light.
+TEST(CoverageArea, HalfPlaneTermMatchesDenseSampling) {
+  std::mt19937 rng(5u);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi), offset(-0.9, 0.9);
+  int nonzero = 0;
+  for (const LightOutline outline : {LightOutline::Disk, LightOutline::Square}) {
+    for (const auto& [a3, b3] : randomSegments(10, outline == LightOutline::Disk ? 3u : 4u)) {
+      dvec2 lo, hi;
+      if (!clipToOutline(outline, dvec3(a3, 1.0), dvec3(b3, 1.0), lo, hi)) continue;
+      const double phi = angle(rng);
+      const dvec2 n(std::cos(phi), std::sin(phi));
+      const double h = offset(rng);
+      const double exact = insideFractionInHalfPlane(outline, lo, hi, n, h);
+      // Sampled: the definition of sampledFraction, restricted to n . x + h > 0.
+      const double turn = cross2(lo, hi);
+      const dvec2 a = turn > 0.0 ? lo : hi, b = turn > 0.0 ? hi : lo;
+      const int grid = 2400;
+      const double cell = 2.0 / grid;
+      long count = 0;
+      for (int j = 0; j < grid; ++j)
+        for (int i = 0; i < grid; ++i) {
+          const dvec2 x(-1.0 + (i + 0.5) * cell, -1.0 + (j + 0.5) * cell);
+          if (outline == LightOutline::Disk && glm::dot(x, x) > 1.0) continue;
+          if (glm::dot(n, x) + h <= 0.0) continue;
+          if (cross2(a, x) < 0.0 || cross2(x, b) < 0.0) continue;
+          if (cross2(b - a, x - a) >= 0.0) continue;
+          ++count;
+        }
+      const double sampled = (turn > 0.0 ? 1.0 : -1.0) * double(count) * cell * cell /
+                             (outline == LightOutline::Disk ? kPi : 4.0);
+      EXPECT_NEAR(exact, sampled, 1e-4) << "outline " << int(outline);
+      EXPECT_NEAR(insideFractionInHalfPlane(outline, lo, hi, n, 10.0),
+                  insideFraction(outline, lo, hi), 1e-12);
+      nonzero += std::fabs(sampled) > 0.01;
+    }
+  }
+  std::printf("[ coverage ] half-plane terms tested: %d non-zero\n", nonzero);
+  EXPECT_GE(nonzero, 6) << "too few segments crossed the light to test anything";
+}
+
 // The float kernels (what `coverage` runs: the disk's for sphere and disk lights, the
 // square's for rectangles) against the exact area in double, end points given in homogeneous
 // form with random depths W, some behind the point (W < 0): within 1e-5 of the light. And each

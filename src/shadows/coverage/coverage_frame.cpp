@@ -6,12 +6,18 @@
 
 namespace penumbra {
 
-double frontOfPlaneFraction(const CoverageFrame& f, const dvec3& normal) {
+void frontHalfPlane(const CoverageFrame& f, const dvec3& normal, dvec2& slope, double& offset) {
   // A light point y = p + n / inv_depth + t (X / scale_t - offset_t) + b (Y / scale_b - offset_b)
   // is in front when normal . (y - p) > 0: linear in (X, Y).
-  const double offset = glm::dot(normal, f.n) / f.inv_depth - glm::dot(normal, f.t) * f.offset_t -
-                        glm::dot(normal, f.b) * f.offset_b;
-  const dvec2 slope(glm::dot(normal, f.t) / f.scale_t, glm::dot(normal, f.b) / f.scale_b);
+  offset = glm::dot(normal, f.n) / f.inv_depth - glm::dot(normal, f.t) * f.offset_t -
+           glm::dot(normal, f.b) * f.offset_b;
+  slope = dvec2(glm::dot(normal, f.t) / f.scale_t, glm::dot(normal, f.b) / f.scale_b);
+}
+
+double frontOfPlaneFraction(const CoverageFrame& f, const dvec3& normal) {
+  dvec2 slope;
+  double offset;
+  frontHalfPlane(f, normal, slope, offset);
   return halfPlaneFraction(f.outline, slope, offset);
 }
 

@@ -37,6 +37,8 @@ struct CoverageFrame {
 // Fraction of the light in front of the plane through the point with normal `normal` (the side
 // it points to): what the point's own surface leaves of the light.
 double frontOfPlaneFraction(const CoverageFrame& frame, const dvec3& normal);
+// The same plane as a half-plane of the frame's light plane: slope . (X, Y) + offset > 0 in front.
+void frontHalfPlane(const CoverageFrame& frame, const dvec3& normal, dvec2& slope, double& offset);
 
 // False when the point sees the light from inside it (a sphere) or edge-on (in a disk's or
 // rectangle's plane): no edge coverage is defined there and the hard answer stands.

@@ -117,6 +117,9 @@ struct Scratch {
   int px[kBlockPixels], py[kBlockPixels];
   float sum[kBlockPixels];
   float own_plane[kBlockPixels];
+  // The own plane as a half-plane of the light (frontHalfPlane), where it cuts the light.
+  dvec2 plane_slope[kBlockPixels];
+  double plane_offset[kBlockPixels];
   float hard[kBlockPixels];  // 1 - the stencil's count of volumes holding the point  // fraction of the light in front of the visible triangle
   PairBatch batch;
   std::vector<dvec3> a, b;  // an edge's end points in each pixel's frame (double, rectangle)
@@ -236,7 +239,11 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
               if (coverageFrame(light, p, s.frames[i])) {
                 const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
                 if (normal != dvec3(0.0))
-                  s.own_plane[i] = float(frontOfPlaneFraction(s.frames[i], normal));
+                {
+                  frontHalfPlane(s.frames[i], normal, s.plane_slope[i], s.plane_offset[i]);
+                  s.own_plane[i] = float(
+                      halfPlaneFraction(s.frames[i].outline, s.plane_slope[i], s.plane_offset[i]));
+                }
               } else {
                 block.active &= ~(uint64_t(1) << i);
               }
@@ -285,16 +292,36 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
           } else {
             diskCoverage(batch, n, context.simd);
           }
+          // Where the visible surface's own plane cuts the light (the terminator), the light
+          // that is left is the part L' in front of it: the cones over the silhouette cover L'
+          // as they cover L (winding number times), so V = f (1 - count) + sum of the edges'
+          // terms over L', f = |L'| / |L|, exactly; the terms over L with min(V, f) would
+          // count light an occluder hides in front of the plane. Scalar, in double, the same
+          // in both modes (analytic lights only: the table has no half-plane).
+          const bool cut_terms = table == nullptr;
           // In pair order: the sums do not depend on threads or SIMD.
           for (size_t k = 0; k < n; ++k) {
-            if (b.fraction[k] != 0.0f) ++work.inside;
-            s.sum[b.pixel[k]] += float(b.weight[k]) * b.fraction[k];
+            const int i = b.pixel[k];
+            float fraction = b.fraction[k];
+            if (cut_terms && s.own_plane[i] < 1.0f) {
+              dvec2 lo, hi;
+              fraction = clipToOutline(s.frames[i].outline, dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                       dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)
+                             ? float(insideFractionInHalfPlane(s.frames[i].outline, lo, hi,
+                                                               s.plane_slope[i],
+                                                               s.plane_offset[i]))
+                             : 0.0f;
+            }
+            if (fraction != 0.0f) ++work.inside;
+            s.sum[i] += float(b.weight[k]) * fraction;
           }
           for (uint64_t active = framed_ok; active != 0; active &= active - 1) {
             const int i = __builtin_ctzll(active);
             if (!s.framed[i]) continue;
             float& v = soft.at(s.px[i], s.py[i]);
-            v = std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), s.own_plane[i]);
+            const float f = s.own_plane[i];
+            v = cut_terms && f < 1.0f ? std::clamp(f * s.hard[i] + s.sum[i], 0.0f, f)
+                                      : std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), f);
           }
         }
       });

@@ -37,7 +37,95 @@ double squareConeArea(const dvec2& lo, const dvec2& hi) {
   return 0.5 * area;
 }
 
+// Convex polygons of at most kMaxVertices vertices, clipped by half-planes in turn.
+constexpr int kMaxVertices = 12;
+struct Polygon {
+  dvec2 v[kMaxVertices];
+  int count = 0;
+  // Keeps the side where n . x + offset >= 0 (Sutherland-Hodgman).
+  void clip(const dvec2& n, double offset) {
+    dvec2 out[kMaxVertices];
+    int k = 0;
+    for (int i = 0; i < count && k + 2 <= kMaxVertices; ++i) {
+      const dvec2 p = v[i], q = v[(i + 1) % count];
+      const double fp = glm::dot(n, p) + offset, fq = glm::dot(n, q) + offset;
+      if (fp >= 0.0) out[k++] = p;
+      if ((fp >= 0.0) != (fq >= 0.0)) out[k++] = p + (q - p) * (fp / (fp - fq));
+    }
+    count = k;
+    std::copy(out, out + k, v);
+  }
+  double area() const {
+    double a = 0.0;
+    for (int i = 0; i < count; ++i) a += cross(v[i], v[(i + 1) % count]);
+    return 0.5 * a;
+  }
+};
+
+// Signed area of the triangle (origin, p, q) inside the unit disk: the segment from p to q split
+// where it crosses the circle; a piece inside adds its triangle with the origin, a piece outside
+// the circular sector its directions span.
+double originTriangleInUnitDisk(const dvec2& p, const dvec2& q) {
+  const dvec2 d = q - p;
+  const double a = glm::dot(d, d), b = glm::dot(p, d), c = glm::dot(p, p) - 1.0;
+  double t[4] = {0.0, 0.0, 0.0, 1.0};
+  int n = 1;
+  const double disc = b * b - a * c;
+  if (a > 0.0 && disc > 0.0) {
+    const double root = std::sqrt(disc);
+    for (const double ti : {(-b - root) / a, (-b + root) / a})
+      if (ti > 0.0 && ti < 1.0) t[n++] = ti;
+  }
+  t[n++] = 1.0;
+  double area = 0.0;
+  for (int i = 0; i + 1 < n; ++i) {
+    const dvec2 u = p + t[i] * d, w = p + t[i + 1] * d;
+    const dvec2 mid = 0.5 * (u + w);
+    if (glm::dot(mid, mid) <= 1.0) {
+      area += 0.5 * cross(u, w);
+    } else {
+      area += 0.5 * std::atan2(cross(u, w), glm::dot(u, w));
+    }
+  }
+  return area;
+}
+
 }  // namespace
+
+double insideFractionInHalfPlane(LightOutline outline, const dvec2& lo, const dvec2& hi,
+                                 const dvec2& n, double offset) {
+  const double turn = cross(lo, hi);
+  if (turn == 0.0) return 0.0;
+  const dvec2 a = turn > 0.0 ? lo : hi, b = turn > 0.0 ? hi : lo;
+  // The cone from the centre between a and b (less than pi wide: the segment misses the
+  // centre), within a square holding the light, on the kept side.
+  const double reach = outline == LightOutline::Disk ? 2.0 : 1.0;
+  Polygon cone;
+  cone.count = 4;
+  cone.v[0] = {-reach, -reach};
+  cone.v[1] = {reach, -reach};
+  cone.v[2] = {reach, reach};
+  cone.v[3] = {-reach, reach};
+  cone.clip(dvec2(-a.y, a.x), 0.0);  // left of a
+  cone.clip(dvec2(b.y, -b.x), 0.0);  // right of b
+  cone.clip(n, offset);
+  double cone_area = 0.0;
+  if (outline == LightOutline::Disk) {
+    for (int i = 0; i < cone.count; ++i)
+      cone_area += originTriangleInUnitDisk(cone.v[i], cone.v[(i + 1) % cone.count]);
+  } else {
+    cone_area = cone.area();
+  }
+  Polygon triangle;
+  triangle.count = 3;
+  triangle.v[0] = {0.0, 0.0};
+  triangle.v[1] = a;
+  triangle.v[2] = b;
+  triangle.clip(n, offset);
+  const double area =
+      (cone_area - triangle.area()) / (outline == LightOutline::Disk ? kPi : 4.0);
+  return turn > 0.0 ? area : -area;
+}
 
 double insideFraction(LightOutline outline, const dvec2& lo, const dvec2& hi) {
   const double turn = cross(lo, hi);
