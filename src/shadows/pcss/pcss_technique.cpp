@@ -9,12 +9,14 @@
 // assumptions), and a single depth map from the centre cannot see what only the light's rim
 // sees. At radius 0 it is the plain shadow map (one lookup), not the exact hard shadow.
 //
-// The lookup loop is scalar in this version (RenderContext::simd reaches the rasterizer only).
+// The lookups run a row's points face by face through the PCSS kernel (pcss_kernel.h), SIMD
+// over points, or its scalar twin (RenderContext::simd).
 //
 // Counters: the map's rasterization counts its own; z_reads adds every map read of the
 // lookups; shadow_map_lookups counts the pixels looked up.
 #include "shadows/pcss/pcss_technique.h"
 
+#include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
@@ -22,12 +24,15 @@
 #include "core/error.h"
 #include "core/timer.h"
 #include "shadows/pcss/pcss_filter.h"
+#include "shadows/pcss/pcss_kernel.h"
 #include "shadows/shadowmap/light_depth_maps.h"
 #include "shadows/shadowmap/light_frustum.h"
 #include "shadows/shadowmap/shadow_map_lookup.h"
 
 namespace penumbra {
 namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
 
 class Pcss final : public PreparedTechnique {
  public:
@@ -47,18 +52,37 @@ class Pcss final : public PreparedTechnique {
     const std::vector<double> nearest = nearestOccluders(maps);
 
     PassTimer timer(stats, "lookups");
-    PcssSettings settings;
-    settings.radius = double(light.radius);
-    settings.constant_bias = options_.constant_bias;
-    settings.slope_bias = options_.slope_bias;
-    settings.blocker_samples = options_.blocker_samples;
-    settings.filter_samples = options_.filter_samples;
+    const VogelSpiral blocker_spiral(options_.blocker_samples);
+    const VogelSpiral filter_spiral(options_.filter_samples);
+    PcssShape shape;
+    shape.light_radius = double(light.radius);
+    shape.constant_bias = options_.constant_bias;
+    shape.blocker = &blocker_spiral;
+    shape.filter = &filter_spiral;
     std::vector<uint64_t> reads(size_t(view.height), 0);
-    lookupVisiblePoints(scene_, light, view, eye, maps, nullptr, result.visibility, stats,
-                        [&](int x, int y, const dvec3&, const MapPoint& m, double slope) {
-                          return pcssVisibility(maps, m, slope, pixelRotation(x, y), settings,
-                                                reads[size_t(y)], nearest[size_t(m.face)]);
-                        });
+    lookupVisiblePoints(
+        scene_, light, view, eye, maps, nullptr, result.visibility, stats,
+        [&](const LookupBatch& batch, float* values) {
+          const size_t n = batch.padded();
+          std::vector<double> texel(n), slope_bias(n), turn_cos(n, 1.0), turn_sin(n, 0.0);
+          for (size_t k = 0; k < n; ++k) {
+            texel[k] = maps.texelSize(batch.face, batch.w[k]);
+            slope_bias[k] = options_.slope_bias * batch.slope[k];
+          }
+          for (size_t k = 0; k < batch.count(); ++k) {
+            const double turn = kTwoPi * pixelRotation(batch.x[k], batch.y);
+            turn_cos[k] = std::cos(turn);
+            turn_sin[k] = std::sin(turn);
+          }
+          PcssFace face;
+          face.texels = {maps.depth[size_t(batch.face)].data(), maps.size, maps.near};
+          face.nearest = nearest[size_t(batch.face)];
+          face.texels_per_tangent = maps.size / (2.0 * maps.tan_half[size_t(batch.face)]);
+          const PcssPoints points{batch.sx.data(), batch.sy.data(), batch.w.data(),
+                                  texel.data(),    slope_bias.data(), turn_cos.data(),
+                                  turn_sin.data()};
+          pcssVisibility(face, shape, points, values, n, reads[size_t(batch.y)], context.simd);
+        });
     for (const uint64_t n : reads) stats.z_reads += n;
     return result;
   }

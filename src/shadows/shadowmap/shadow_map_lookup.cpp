@@ -17,3 +17,32 @@ double receiverSlope(const Scene& scene, uint32_t primitive, const dvec3& p, con
 }
 
 }  // namespace penumbra
+
+namespace penumbra {
+
+void LookupBatch::clear() {
+  x.clear();
+  sx.clear();
+  sy.clear();
+  w.clear();
+  slope.clear();
+}
+
+void LookupBatch::add(int pixel_x, const MapPoint& m, double receiver_slope, int size) {
+  x.push_back(pixel_x);
+  sx.push_back(clampLookupPosition(m.sx, size));
+  sy.push_back(clampLookupPosition(m.sy, size));
+  w.push_back(m.w);
+  slope.push_back(receiver_slope);
+}
+
+void LookupBatch::pad(int size) {
+  while (sx.size() % kLookupBlock != 0) {
+    sx.push_back(0.5 * size);
+    sy.push_back(0.5 * size);
+    w.push_back(0.0);
+    slope.push_back(0.0);
+  }
+}
+
+}  // namespace penumbra

@@ -10,7 +10,8 @@
 // Cook 1987). With --stencil-limit, the spot's frustum is first rasterized as a volume into a
 // stencil and only the pixels inside it are looked up (Arvo & Aila 2003; thesis section 4.2).
 //
-// The lookup loop is scalar in this version (RenderContext::simd reaches the rasterizers only).
+// The lookups run a row's points face by face through the PCF kernel (map_lookup_kernel.h),
+// SIMD over points, or its scalar twin (RenderContext::simd).
 //
 // Counters: the faces' rasterization counts its own (pixels_rasterized, z_reads,
 // stencil_writes as depth writes, triangles), so does the frustum's stencil; the lookups add
@@ -29,6 +30,7 @@
 #include "shadows/shadowmap/light_depth_maps.h"
 #include "shadows/shadowmap/light_frustum.h"
 #include "shadows/shadowmap/light_frustum_stencil.h"
+#include "shadows/shadowmap/map_lookup_kernel.h"
 #include "shadows/shadowmap/shadow_map_lookup.h"
 
 namespace penumbra {
@@ -57,18 +59,18 @@ class ShadowMap final : public PreparedTechnique {
     const double reach = 0.5 * double(kernel + 1);  // texels from p to the farthest lookup
     lookupVisiblePoints(
         scene_, light, view, eye, maps, limit ? &*limit : nullptr, result.visibility, stats,
-        [&](int, int, const dvec3&, const MapPoint& m, double slope) {
-          // Bias, in world units along the axis, from the texel's world size at p's distance.
-          const double bias = maps.texelSize(m.face, m.w) *
-                              (options_.constant_bias + options_.slope_bias * slope * reach);
-          const double receiver = m.w - bias;
-          // Kernel of texel centres nearest the projected position.
-          const int x0 = int(std::floor(m.sx - 0.5 * (kernel - 1)));
-          const int y0 = int(std::floor(m.sy - 0.5 * (kernel - 1)));
-          int lit = 0;
-          for (int j = 0; j < kernel; ++j)
-            for (int i = 0; i < kernel; ++i) lit += maps.occluder(m.face, x0 + i, y0 + j) >= receiver;
-          return float(lit) / float(kernel * kernel);
+        [&](const LookupBatch& batch, float* values) {
+          std::vector<double> receiver(batch.padded());
+          for (size_t k = 0; k < batch.padded(); ++k) {
+            // Bias, in world units along the axis, from the texel's world size at p's distance.
+            const double bias =
+                maps.texelSize(batch.face, batch.w[k]) *
+                (options_.constant_bias + options_.slope_bias * batch.slope[k] * reach);
+            receiver[k] = batch.w[k] - bias;
+          }
+          const FaceTexels face{maps.depth[size_t(batch.face)].data(), maps.size, maps.near};
+          pcfVisibility(face, batch.sx.data(), batch.sy.data(), receiver.data(), kernel, values,
+                        batch.padded(), context.simd);
         });
     stats.z_reads += stats.shadow_map_lookups * uint64_t(kernel) * uint64_t(kernel);
     return result;
