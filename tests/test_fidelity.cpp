@@ -39,6 +39,8 @@ TEST(FidelityMetrics, HandComputedErrorsOverCoveredAndPenumbraPixels) {
   EXPECT_NEAR(e.covered.mae, 1.1 / 7.0, 1e-6);
   EXPECT_NEAR(e.covered.rmse, std::sqrt(0.4650 / 7.0), 1e-6);
   EXPECT_NEAR(e.covered.p99, 0.6, 1e-6);  // nearest rank: ceil(0.99 * 7) = 7th of 7
+  // Signed: 0.2 + 0.25 - 0.6 - 0.05 = -0.2 (an |error| or a swapped sign would not give it).
+  EXPECT_NEAR(e.covered.mean_signed, -0.2 / 7.0, 1e-6);
   // Over 0.1: 0.2, 0.25, 0.6 (0.05 is not): 3 of 7. The background's error 1 would make it 4.
   EXPECT_NEAR(e.fraction_over, 3.0 / 7.0, 1e-12);
   // Penumbra: pixels 2, 3, 4, errors {0, 0.25, 0.6}: a mask counting pixels 0 or 1 (where the
@@ -47,6 +49,7 @@ TEST(FidelityMetrics, HandComputedErrorsOverCoveredAndPenumbraPixels) {
   EXPECT_NEAR(e.penumbra.mae, 0.85 / 3.0, 1e-6);
   EXPECT_NEAR(e.penumbra.rmse, std::sqrt((0.0625 + 0.36) / 3.0), 1e-6);
   EXPECT_NEAR(e.penumbra.p99, 0.6, 1e-6);
+  EXPECT_NEAR(e.penumbra.mean_signed, -0.35 / 3.0, 1e-6);
 }
 
 // Two lights pool their pixels (a mean over all, not a mean of the lights' means): light 0 has
@@ -168,14 +171,15 @@ TEST_F(FidelityCli, WritesPageWithFiniteRowsAndStrips) {
   const std::string page = testing::slurp(path("page/fidelity.md"));
   EXPECT_NE(page.find("penumbra fidelity --size 48x32 --scenes spheres"), std::string::npos);
   for (const std::string technique : {"wedge-3pass", "coverage"}) {
-    // "| name | MAE | RMSE | p99 | penumbra MAE | RMSE | p99 | off % | ms | rays |...": eight
-    // numbers, none nan or inf.
+    // "| name | MAE | RMSE | p99 | penumbra MAE | RMSE | p99 | signed | off % | ms | rays |...":
+    // nine numbers, none nan or inf.
     const std::regex row("\\| " + technique +
                          " \\| ([0-9.]+) \\| ([0-9.]+) \\| ([0-9.]+) \\| ([0-9.]+) \\| ([0-9.]+) "
-                         "\\| ([0-9.]+) \\| ([0-9.]+)% \\| ([0-9.]+) \\| (> 8|[0-9]+) \\|");
+                         "\\| ([0-9.]+) \\| ([-+][0-9.]+) \\| ([0-9.]+)% \\| ([0-9.]+) \\| "
+                         "(> 8|[0-9]+) \\|");
     std::smatch m;
     ASSERT_TRUE(std::regex_search(page, m, row)) << technique << "\n" << page;
-    for (int i = 1; i <= 8; ++i) EXPECT_TRUE(std::isfinite(std::stod(m[i].str()))) << m[i];
+    for (int i = 1; i <= 9; ++i) EXPECT_TRUE(std::isfinite(std::stod(m[i].str()))) << m[i];
     EXPECT_TRUE(std::filesystem::exists(path("page/images/fidelity/spheres-" + technique + ".png")));
   }
   const std::string csv = testing::slurp(path("raw/fidelity.csv"));

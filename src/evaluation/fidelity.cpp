@@ -14,6 +14,7 @@
 #include "core/progress.h"
 #include "core/simd_dispatch.h"
 #include "evaluation/fidelity_strip.h"
+#include "metrics/image_compare.h"
 #include "render/eye_pass.h"
 #include "render/frame_timing.h"
 #include "render/stats_json.h"
@@ -149,6 +150,7 @@ FidelityScene measureScene(const FidelityOptions& o, const std::string& name, co
     return p;
   };
 
+  std::vector<std::pair<std::string, std::vector<Image<float>>>> rendered;  // distinct images
   for (const std::string& technique : techniques) {
     FidelityRow row;
     row.technique = technique;
@@ -172,12 +174,26 @@ FidelityScene measureScene(const FidelityOptions& o, const std::string& name, co
         row.equal_error_ms = out.curve[size_t(at)].ms;
         row.speed_ratio = row.technique_ms > 0 ? row.equal_error_ms / row.technique_ms : 0.0;
       }
-      if (!o.strip_dir.empty()) {
+      // A technique whose every light's image equals an earlier one's (the wedge
+      // implementations agree pixel for pixel) links that strip instead of writing a copy.
+      for (const auto& [earlier, images] : rendered)
+        if (std::equal(v.begin(), v.end(), images.begin(), images.end(),
+                       [](const Image<float>& a, const Image<float>& b) {
+                         return compareExact(a, b).differing == 0;
+                       })) {
+          row.same_as = earlier;
+          break;
+        }
+      if (!row.same_as.empty()) {
+        for (const FidelityRow& r : out.rows)
+          if (r.technique == row.same_as) row.strip = r.strip;
+      } else if (!o.strip_dir.empty()) {
         const std::string file = fmt::format("{}-{}.png", out.label, technique);
         writeFidelityStrip((fs::path(o.strip_dir) / file).string(), v[0], reference[0],
                            o.heat_scale, o.strip_shrink);
         row.strip = o.strip_prefix + file;
       }
+      if (row.same_as.empty()) rendered.emplace_back(technique, v);
       log(fmt::format("{}: {}: penumbra MAE {:.4f}, {:.1f} ms, equal-error rays {}", out.label,
                       technique, row.error.penumbra.mae, row.technique_ms,
                       row.equal_error_rays > 0 ? fmt::format("{}", row.equal_error_rays)

@@ -31,7 +31,7 @@ struct FidelityOptions {
   std::string strip_dir;
   std::string strip_prefix;  // prepended to strip file names in the rows (the page's relative path)
   int strip_shrink = 2;
-  float heat_scale = 0.5f;  // error drawn brightest in every heat map, so strips compare
+  float heat_scale = 0.25f;  // error drawn brightest in every heat map, so strips compare
   bool simd = true;
   int threads = 0;             // 0: all cores
   bool show_progress = false;  // progress bar on a terminal (core/progress.h)
@@ -47,6 +47,7 @@ struct FidelityRow {
   double equal_error_ms = 0;  // the oracle's time at that count
   double speed_ratio = 0;     // equal_error_ms / technique_ms (0 when no count reached it)
   std::string strip;          // strip file name with strip_prefix ("" : none written)
+  std::string same_as;        // an earlier technique of the scene with the same image, bit for bit
 };
 
 struct FidelityScene {

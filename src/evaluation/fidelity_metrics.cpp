@@ -12,7 +12,7 @@ namespace {
 // Sums of one pixel set over the lights, before the means.
 struct Pooled {
   size_t pixels = 0, finite = 0, nonfinite = 0, over = 0;
-  double sum_abs = 0, sum_sq = 0;
+  double sum_abs = 0, sum_sq = 0, sum_signed = 0;
   std::vector<double> errors;  // finite |a - b|, for the percentile
 
   void add(const Image<float>& a, const Image<float>& b, const Image<uint8_t>& mask,
@@ -29,8 +29,10 @@ struct Pooled {
     sum_sq += d.rmse * d.rmse * double(finite_here);
     for (size_t i = 0; i < a.size(); ++i) {
       if (!mask[i]) continue;
-      const double e = std::fabs(double(a[i]) - double(b[i]));
-      if (std::isfinite(e)) errors.push_back(e);
+      const double signed_error = double(a[i]) - double(b[i]);
+      if (!std::isfinite(signed_error)) continue;
+      errors.push_back(std::fabs(signed_error));
+      sum_signed += signed_error;
     }
   }
 
@@ -41,6 +43,7 @@ struct Pooled {
     if (finite > 0) {
       s.mae = sum_abs / double(finite);
       s.rmse = std::sqrt(sum_sq / double(finite));
+      s.mean_signed = sum_signed / double(finite);
     }
     s.p99 = percentileOf(errors, 0.99);
     return s;

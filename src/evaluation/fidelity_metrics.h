@@ -17,6 +17,9 @@ struct ErrorStats {
   double mae = 0;     // mean |technique - oracle|
   double rmse = 0;
   double p99 = 0;     // 99th percentile of |technique - oracle| (nearest rank); 0 when empty
+  // Mean of technique - oracle: negative where the technique is too dark (overlapping
+  // occluders' penumbrae summed), positive where light leaks.
+  double mean_signed = 0;
   size_t nonfinite = 0;  // NaN or infinite visibilities: a bug, counted and never averaged
 };
 

@@ -78,30 +78,33 @@ std::string sceneSection(const FidelityResult& r, const FidelityScene& s) {
   if (s.curve.empty()) out += " (not needed)";
   out += "\n\n";
   out += fmt::format(
-      "| technique | MAE | RMSE | p99 | penumbra MAE | penumbra RMSE | penumbra p99 | off > {:g} "
-      "| ms | equal-error rays | oracle ms at N | speed ratio |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      "| technique | MAE | RMSE | p99 | penumbra MAE | penumbra RMSE | penumbra p99 | penumbra "
+      "signed | off > {:g} | ms | equal-error rays | oracle ms at N | speed ratio |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
       o.tolerance);
   for (const FidelityRow& row : s.rows) {
     if (!row.failure.empty()) {
-      out += fmt::format("| {} | not run: {} |||||||||||\n", row.technique, row.failure);
+      out += fmt::format("| {} | not run: {} ||||||||||||\n", row.technique, row.failure);
       continue;
     }
     const FidelityError& e = row.error;
     out += fmt::format(
-        "| {} | {:.4f} | {:.4f} | {:.3f} | {:.4f} | {:.4f} | {:.3f} | {:.2f}% | {:.1f} | {} | {} | "
-        "{} |\n",
+        "| {} | {:.4f} | {:.4f} | {:.3f} | {:.4f} | {:.4f} | {:.3f} | {:+.4f} | {:.2f}% | {:.1f} | "
+        "{} | {} | {} |\n",
         row.technique, e.covered.mae, e.covered.rmse, e.covered.p99, e.penumbra.mae,
-        e.penumbra.rmse, e.penumbra.p99, 100.0 * e.fraction_over, row.technique_ms,
+        e.penumbra.rmse, e.penumbra.p99, e.penumbra.mean_signed, 100.0 * e.fraction_over, row.technique_ms,
         raysText(row, o.max_search_rays),
         row.equal_error_rays > 0 ? fmt::format("{:.0f}", row.equal_error_ms) : "-",
         ratioText(row));
   }
   out += "\n";
-  for (const FidelityRow& row : s.rows)
-    if (!row.strip.empty())
+  for (const FidelityRow& row : s.rows) {
+    if (!row.same_as.empty())
+      out += fmt::format("{}: the same image as {}, bit for bit.\n\n", row.technique, row.same_as);
+    else if (!row.strip.empty())
       out += fmt::format("{}: ![{} on {}]({})\n\n", row.technique, row.technique, s.label,
                          row.strip);
+  }
   return out;
 }
 
@@ -121,7 +124,8 @@ std::string fidelityMarkdown(const FidelityResult& r, const std::string& command
       "rays per pixel (seed {}). Per scene and technique, over all lights:\n\n"
       "- **MAE, RMSE, p99**: mean, root-mean-square and 99th-percentile (nearest rank) "
       "|technique - oracle| visibility error over the pixels that show geometry; the "
-      "**penumbra** columns over the oracle's penumbra pixels only (0 < oracle < 1).\n"
+      "**penumbra** columns over the oracle's penumbra pixels only (0 < oracle < 1); "
+      "**penumbra signed** the mean of technique - oracle there (negative: too dark).\n"
       "- **off > {:g}**: the share of pixels showing geometry off by more than {:g}.\n"
       "- **ms**: the technique alone, prepared beforehand, median of {} renders after a warm-up "
       "(all lights; no eye pass, no shading). The oracle's times are one render each, its BVH "
@@ -151,7 +155,7 @@ std::string fidelityMarkdown(const FidelityResult& r, const std::string& command
 std::string fidelityCsv(const FidelityResult& r) {
   std::ostringstream out;
   out << "scene,technique,failure,covered_pixels,mae,rmse,p99,penumbra_pixels,penumbra_mae,"
-         "penumbra_rmse,penumbra_p99,fraction_over,technique_ms,equal_error_rays,"
+         "penumbra_rmse,penumbra_p99,penumbra_mean_signed,fraction_over,technique_ms,equal_error_rays,"
          "equal_error_ms,speed_ratio,oracle_ms\n";
   for (const FidelityScene& s : r.scenes)
     for (const FidelityRow& row : s.rows) {
@@ -159,11 +163,12 @@ std::string fidelityCsv(const FidelityResult& r) {
       std::string failure = row.failure;
       std::replace(failure.begin(), failure.end(), ',', ';');
       std::replace(failure.begin(), failure.end(), '\n', ' ');
-      out << fmt::format("{},{},{},{},{:.6g},{:.6g},{:.6g},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},"
+      out << fmt::format("{},{},{},{},{:.6g},{:.6g},{:.6g},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},"
                          "{},{:.6g},{:.6g},{:.6g}\n",
                          s.label, row.technique, failure, e.covered.pixels, e.covered.mae,
                          e.covered.rmse, e.covered.p99, e.penumbra.pixels, e.penumbra.mae,
-                         e.penumbra.rmse, e.penumbra.p99, e.fraction_over, row.technique_ms,
+                         e.penumbra.rmse, e.penumbra.p99, e.penumbra.mean_signed, e.fraction_over,
+                         row.technique_ms,
                          row.equal_error_rays, row.equal_error_ms, row.speed_ratio, s.oracle_ms);
     }
   return out.str();
