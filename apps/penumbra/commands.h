@@ -20,6 +20,7 @@ Subcommand addScenesCommand(CLI::App& app);
 Subcommand addBenchCommand(CLI::App& app);
 Subcommand addTechniquesCommand(CLI::App& app);
 Subcommand addConvertCommand(CLI::App& app);
+Subcommand addFidelityCommand(CLI::App& app);
 // One technique's summary and options with their defaults (`penumbra techniques NAME`); throws
 // penumbra::Error for an unknown name.
 void printTechnique(const std::string& name);

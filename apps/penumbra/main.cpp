@@ -32,6 +32,7 @@ int run(int argc, char** argv) {
       penumbra::cli::addTechniquesCommand(app),
       penumbra::cli::addBenchCommand(app),
       penumbra::cli::addConvertCommand(app),
+      penumbra::cli::addFidelityCommand(app),
   };
   // CLI11 would call an unknown command word a missing subcommand; name it instead.
   if (argc > 1 && argv[1][0] != '-') {
