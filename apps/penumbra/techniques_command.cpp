@@ -1,4 +1,5 @@
 // penumbra techniques [NAME]: the registered shadow techniques, or one technique's options.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -21,8 +22,10 @@ std::string claims(const TechniqueTraits& t) {
 int runTechniques(const std::string& name) {
   if (name.empty()) {
     std::cout << "techniques ('penumbra techniques NAME' lists one's options):\n";
+    size_t width = 0;  // names in one column, however long the longest
+    for (const TechniqueInfo& info : techniques()) width = std::max(width, info.name.size());
     for (const TechniqueInfo& info : techniques())
-      std::cout << fmt::format("  {:<12} [{}] {}\n", info.name, claims(info.traits),
+      std::cout << fmt::format("  {:<{}} [{}] {}\n", info.name, width, claims(info.traits),
                                info.summary);
     return 0;
   }
