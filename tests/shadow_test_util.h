@@ -1,7 +1,9 @@
 #pragma once
 // Runs a technique and the oracle on the same eye pass, for tests against ground truth.
+#include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "metrics/shadow_boundary.h"
 #include "render/eye_pass.h"
@@ -61,6 +63,26 @@ inline bool sceneModelsPresent(const std::filesystem::path& scene_file) {
     if (!std::filesystem::exists(std::filesystem::path(modelsDirectory()) / name)) return false;
   }
   return true;
+}
+
+// Calls fn(path, scene) for every scene file in scenes/ whose models are present, in directory
+// order; the others get a skip line and are counted. Returns {scenes run, scenes skipped}.
+template <class Fn>
+std::pair<int, int> forEachSceneFileWithModels(Fn&& fn) {
+  const std::filesystem::path dir = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
+  std::pair<int, int> counts{0, 0};
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    if (!sceneModelsPresent(entry.path())) {
+      std::printf("[ SKIPPED  ] %s: its models are not in %s\n",
+                  entry.path().filename().c_str(), modelsDirectory().c_str());
+      ++counts.second;
+      continue;
+    }
+    fn(entry.path(), loadSceneFile(entry.path().string()));
+    ++counts.first;
+  }
+  return counts;
 }
 
 // Path of a shared model, or empty when the models are not available (tests then skip).

@@ -57,27 +57,16 @@ TEST(ShadowVolumeOracle, BuiltinScenes) {
 
 // Every mesh of ../shared/models in its scene file, the open and non-manifold ones included.
 TEST(ShadowVolumeOracle, SharedModelScenes) {
-  const std::filesystem::path dir = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
   if (!std::filesystem::exists(std::filesystem::path(modelsDirectory()) / "bunny-lowres.obj"))
     GTEST_SKIP() << "shared models not found in " << modelsDirectory();
-  int scenes = 0;
-  int skipped = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".json") continue;
-    if (!testing::sceneModelsPresent(entry.path())) {
-      std::printf("[ SKIPPED  ] %s: its models are not in %s\n",
-                  entry.path().filename().c_str(), modelsDirectory().c_str());
-      ++skipped;
-      continue;
-    }
-    const Scene scene = loadSceneFile(entry.path().string());
-    const View view = scene.camera.makeView(640, 427);
-    for (size_t l = 0; l < scene.lights.size(); ++l) {
-      const auto c = compareHardWithOracle(scene, view, volumeOptions(), l);
-      expectMatchesOracle(c, entry.path().filename().string(), kMaxDifferingFractionModels);
-    }
-    ++scenes;
-  }
+  const auto [scenes, skipped] = testing::forEachSceneFileWithModels(
+      [](const std::filesystem::path& path, const Scene& scene) {
+        const View view = scene.camera.makeView(640, 427);
+        for (size_t l = 0; l < scene.lights.size(); ++l) {
+          const auto c = compareHardWithOracle(scene, view, volumeOptions(), l);
+          expectMatchesOracle(c, path.filename().string(), kMaxDifferingFractionModels);
+        }
+      });
   EXPECT_GE(scenes + skipped, 13);
 }
 
