@@ -169,10 +169,15 @@ bool openMeshWithBothFacings(const Mesh& mesh, const EdgeAdjacency& adjacency, c
   return both == 3;
 }
 
-bool anyOpenMeshWithBothFacings(const Scene& scene, const vec3& light) {
-  for (size_t m = 0; m < scene.meshes.size(); ++m)
-    if (openMeshWithBothFacings(scene.meshes[m], scene.adjacency[m], light)) return true;
-  return false;
+std::vector<uint8_t> openMeshesWithBothFacings(const Scene& scene, const vec3& light) {
+  std::vector<uint8_t> casts(scene.meshes.size(), 0);
+  bool any = false;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    casts[m] = openMeshWithBothFacings(scene.meshes[m], scene.adjacency[m], light);
+    any = any || casts[m] != 0;
+  }
+  if (!any) casts.clear();
+  return casts;
 }
 
 }  // namespace penumbra

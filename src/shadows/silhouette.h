@@ -72,8 +72,9 @@ enum class CasterPolicy {
 // where it matters: it has open edges (a hole a ray can pass), is consistently oriented and
 // has triangles facing the light centre both ways. Judged without its repeated triangles.
 bool openMeshWithBothFacings(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light);
-// Whether some mesh of the scene is such a mesh: the wedges' second pass runs only then.
-bool anyOpenMeshWithBothFacings(const Scene& scene, const vec3& light);
+// Per mesh of the scene, 1 for such a mesh; empty when there is none. The soft techniques' second
+// pass (the other facing) draws exactly these meshes, and runs only when the result is not empty.
+std::vector<uint8_t> openMeshesWithBothFacings(const Scene& scene, const vec3& light);
 
 Silhouette findSilhouette(const Mesh& mesh, const EdgeAdjacency& adjacency, const vec3& light,
                           CasterPolicy policy = CasterPolicy::Auto);

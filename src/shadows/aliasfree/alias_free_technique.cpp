@@ -128,12 +128,7 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
                  "eye primitive ids are {}x{} but the depth buffer is {}x{}",
                  eye.primitive.width(), eye.primitive.height(), width, height);
   const RayOrigins origins(scene_, view);
-  for (size_t i = 0; i < eye.primitive.size(); ++i) {
-    const uint32_t id = eye.primitive[i];
-    PENUMBRA_CHECK(id == kNoPrimitive || id < origins.triangleCount(),
-                   "eye pixel {} names triangle {} but the scene has {} triangles", i, id,
-                   origins.triangleCount());
-  }
+  origins.checkPrimitiveIds(eye.primitive);
 
   TechniqueResult result;
   result.visibility.resize(width, height, 1.0f);

@@ -337,11 +337,12 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   // Open meshes cast one facing, and a ray through a hole (a terrain's border under a low
   // light) misses it: the other facing of those meshes, in a pass of its own, counts those
   // rays, and the darker visibility is kept, as the wedges do (wedge_technique.cpp).
-  if (options_.other_facing_pass && anyOpenMeshWithBothFacings(scene_, light.center)) {
-    std::vector<uint8_t> casts(scene_.meshes.size());
-    for (size_t m = 0; m < casts.size(); ++m)
-      casts[m] = openMeshWithBothFacings(scene_.meshes[m], scene_.adjacency[m], light.center);
-    const Image<float> other = coveragePass(CasterPolicy::SolidWithHolesOtherFacing, &casts);
+  const std::vector<uint8_t> other_facing = options_.other_facing_pass
+                                                ? openMeshesWithBothFacings(scene_, light.center)
+                                                : std::vector<uint8_t>();
+  if (!other_facing.empty()) {
+    const Image<float> other =
+        coveragePass(CasterPolicy::SolidWithHolesOtherFacing, &other_facing);
     for (size_t i = 0; i < soft.size(); ++i) soft[i] = std::min(soft[i], other[i]);
   }
   {

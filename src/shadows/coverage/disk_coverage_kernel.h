@@ -29,6 +29,34 @@ namespace penumbra {
 
 inline constexpr float kMinDepth = 1e-4f;  // W below which an edge point is cut away
 
+// The scalar twins' shared front end (disk and square): the edge's end points cut to
+// W >= kMinDepth, A = (ax, ay, aw) and B = (bx, by, bw), and the line through them, l = A x B.
+// False when nothing of the edge is in front of the point.
+struct FrontSegment {
+  float ax, ay, aw, bx, by, bw;
+  float l1, l2, l3;
+};
+inline bool frontSegment(float x0, float y0, float w0, float x1, float y1, float w1,
+                         FrontSegment& s) {
+  const bool keep0 = w0 >= kMinDepth, keep1 = w1 >= kMinDepth;
+  if (!keep0 && !keep1) return false;
+  const float dw = w1 - w0;
+  const float tc = (kMinDepth - w0) / (keep0 && keep1 ? 1.0f : dw);
+  const float t0 = keep0 ? 0.0f : tc;
+  const float t1 = keep1 ? 1.0f : tc;
+  const float dx = x1 - x0, dy = y1 - y0;
+  s.ax = x0 + t0 * dx;
+  s.ay = y0 + t0 * dy;
+  s.aw = keep0 ? w0 : kMinDepth;
+  s.bx = x0 + t1 * dx;
+  s.by = y0 + t1 * dy;
+  s.bw = keep1 ? w1 : kMinDepth;
+  s.l1 = s.ay * s.bw - s.aw * s.by;
+  s.l2 = s.aw * s.bx - s.ax * s.bw;
+  s.l3 = s.ax * s.by - s.ay * s.bx;
+  return true;
+}
+
 // Batches are structure-of-arrays, n entries each, any n (no alignment needed).
 struct DiskCoverageBatch {
   const float *x0, *y0, *w0, *x1, *y1, *w1;

@@ -23,20 +23,11 @@ float angleOf(float s, float d) {
 }  // namespace
 
 float diskCoverageOne(float x0, float y0, float w0, float x1, float y1, float w1) {
-  // Cut to the part in front of the point: W >= kMinDepth.
-  const bool keep0 = w0 >= kMinDepth, keep1 = w1 >= kMinDepth;
-  if (!keep0 && !keep1) return 0.0f;
-  const float dw = w1 - w0;
-  const float tc = (kMinDepth - w0) / (keep0 && keep1 ? 1.0f : dw);
-  const float t0 = keep0 ? 0.0f : tc;
-  const float t1 = keep1 ? 1.0f : tc;
-  const float dx = x1 - x0, dy = y1 - y0;
-  const float ax = x0 + t0 * dx, ay = y0 + t0 * dy, aw = keep0 ? w0 : kMinDepth;
-  const float bx = x0 + t1 * dx, by = y0 + t1 * dy, bw = keep1 ? w1 : kMinDepth;
-  // The line through both, l = A x B.
-  const float l1 = ay * bw - aw * by;
-  const float l2 = aw * bx - ax * bw;
-  const float l3 = ax * by - ay * bx;
+  // Cut to the part in front of the point (W >= kMinDepth); the line through both ends.
+  FrontSegment s;
+  if (!frontSegment(x0, y0, w0, x1, y1, w1, s)) return 0.0f;
+  const float ax = s.ax, ay = s.ay, aw = s.aw, bx = s.bx, by = s.by, bw = s.bw;
+  const float l1 = s.l1, l2 = s.l2, l3 = s.l3;
   const float n2 = l1 * l1 + l2 * l2;
   if (!(n2 > 0.0f)) return 0.0f;  // the edge points at the point: no area
   const float inv_n = 1.0f / std::sqrt(n2);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
 #include "raster/depth_buffer.h"
 
 namespace penumbra {
@@ -47,6 +48,15 @@ dvec3 awayFromEdges(dvec3 q, const dvec3& a, const dvec3& b, const dvec3& c, con
 }
 
 }  // namespace
+
+void RayOrigins::checkPrimitiveIds(const Image<uint32_t>& ids) const {
+  for (size_t i = 0; i < ids.size(); ++i) {
+    const uint32_t id = ids[i];
+    PENUMBRA_CHECK(id == kNoPrimitive || id < triangleCount(),
+                   "eye pixel {} names triangle {} but the scene has {} triangles", i, id,
+                   triangleCount());
+  }
+}
 
 dvec3 closestPointOnTriangle(const dvec3& q, const dvec3& a, const dvec3& b, const dvec3& c) {
   // Voronoi regions of the vertices, then of the edges, else the face (barycentric).

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/image.h"
 #include "core/math.h"
 #include "core/view.h"
 #include "scene/scene.h"
@@ -40,6 +41,10 @@ class RayOrigins {
 
   // `primitive` is the pixel's global triangle id or kNoPrimitive; depth > 0.
   RayStart start(int x, int y, float depth, uint32_t primitive) const;
+
+  // Throws penumbra::Error naming the pixel when an eye pass's id is not a triangle of the
+  // scene (kNoPrimitive is fine): checked once before the per-pixel work trusts them.
+  void checkPrimitiveIds(const Image<uint32_t>& ids) const;
 
  private:
   const Scene& scene_;

@@ -73,12 +73,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
                  eye.primitive.width(), eye.primitive.height(), width, height);
 
   const RayOrigins origins(scene, view);
-  for (size_t i = 0; i < eye.primitive.size(); ++i) {
-    const uint32_t id = eye.primitive[i];
-    PENUMBRA_CHECK(id == kNoPrimitive || id < origins.triangleCount(),
-                   "eye pixel {} names triangle {} but the scene has {} triangles", i, id,
-                   origins.triangleCount());
-  }
+  origins.checkPrimitiveIds(eye.primitive);
 
   TechniqueResult result;
   result.visibility.resize(width, height, 1.0f);

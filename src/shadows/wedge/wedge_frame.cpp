@@ -269,7 +269,8 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
   // distance r of the hard volume from the centre, so growing the caster's box by r keeps the
   // near-plane test conservative (caster_volume.h).
   const CasterPolicy policy = !soft                 ? CasterPolicy::Auto
-                              : options.other_facing ? CasterPolicy::SolidWithHolesOtherFacing
+                              : options.other_facing_meshes != nullptr
+                                  ? CasterPolicy::SolidWithHolesOtherFacing
                                                      : CasterPolicy::SolidWithHoles;
   p.volume = casterVolume(scene, m, eye, light.center, view, options.volume_mode, policy,
                           light.radius);
@@ -312,13 +313,12 @@ WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
   const bool soft = light.radius > 0.0f;
   const ScreenProjection projection = screenProjection(view);
   std::vector<MeshWedges> prepared(scene.meshes.size());
-  // The other facing's pass draws only the open meshes whose other facing can cast.
-  std::vector<uint8_t> casts(scene.meshes.size(), 1);
-  if (options.other_facing)
-    for (size_t m = 0; m < scene.meshes.size(); ++m)
-      casts[m] = openMeshWithBothFacings(scene.meshes[m], scene.adjacency[m], light.center);
+  // The other facing's pass draws only the meshes it was given.
+  auto casts = [&](size_t m) {
+    return options.other_facing_meshes == nullptr || (*options.other_facing_meshes)[m] != 0;
+  };
   parallelFor(scene.meshes.size(), [&](size_t m) {
-    if (casts[m]) prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);
+    if (casts(m)) prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);
   });
   // The nearest edge the light reaches (the first mesh's on a tie, whatever the thread count):
   // its distance is the largest radius the frame's wedges could take.
@@ -332,7 +332,7 @@ WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
     throw Error(
         edgeInsideLightMessage(scene.meshes[reached], light, *prepared[reached].inside_light));
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    if (!casts[m]) continue;
+    if (!casts(m)) continue;
     const Mesh& mesh = scene.meshes[m];
     MeshWedges& p = prepared[m];
     const WedgeSet& ws = p.ws;

@@ -57,9 +57,10 @@ struct WedgeFrameOptions {
   // 0: every mesh's own silhouette. +1 or -1: only the triangles edge-on to the light centre
   // that the mesh does not already cast with this facing, cast with it (edge_on_sheet.h).
   int8_t edge_on_facing = 0;
-  // Only the meshes openMeshWithBothFacings picks, each casting the facing it otherwise leaves
-  // out (CasterPolicy::SolidWithHolesOtherFacing): the wedges' second pass (wedge_technique.cpp).
-  bool other_facing = false;
+  // Not null: only the meshes marked here (openMeshesWithBothFacings) cast, each with the facing
+  // it otherwise leaves out (CasterPolicy::SolidWithHolesOtherFacing): the wedges' second pass
+  // (wedge_technique.cpp), as ShadowStencilOptions::casting_meshes for the coverage technique.
+  const std::vector<uint8_t>* other_facing_meshes = nullptr;
 };
 WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
                            const Light& light, const View& view, const EyeBuffers& eye);

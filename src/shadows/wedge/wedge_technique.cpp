@@ -293,7 +293,8 @@ std::string wedgeTechniqueName(WedgeAlgorithm algorithm) {
 
 WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene,
                       const Light& light, const View& view, const EyeBuffers& eye,
-                      const RenderContext& context, int8_t edge_on_facing, bool other_facing) {
+                      const RenderContext& context, int8_t edge_on_facing,
+                      const std::vector<uint8_t>* other_facing_meshes) {
   WedgeLi result;
   Stats& stats = result.stats;
   const int full = kLiFull;
@@ -308,7 +309,7 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
         algorithm == WedgeAlgorithm::Original2002 ? VolumeMode::ZPass : options.volume_mode;
     frame_options.smooth_falloff = options.smooth_falloff;
     frame_options.edge_on_facing = edge_on_facing;
-    frame_options.other_facing = other_facing;
+    frame_options.other_facing_meshes = other_facing_meshes;
     frame = buildWedgeFrame(frame_options, scene, light, view, eye);
     stats.silhouette_edges += frame.silhouette_edges;
     stats.wedges += frame.wedges.size();
@@ -368,10 +369,13 @@ class PenumbraWedges final : public PreparedTechnique {
     // under a low light, a scan's open base) counts nothing and its point comes out lit. The
     // other facing, in a buffer of its own, counts exactly those rays; both facings' passes
     // are single-sided, so their folds keep one wedge each, and the darker visibility is kept.
-    if (!hard && options_.other_facing_pass && anyOpenMeshWithBothFacings(scene_, light.center)) {
+    const std::vector<uint8_t> other_facing =
+        hard || !options_.other_facing_pass ? std::vector<uint8_t>()
+                                            : openMeshesWithBothFacings(scene_, light.center);
+    if (!other_facing.empty()) {
       PassTimer timer(result.stats, "other facing");
-      WedgeLi other = renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context, 0,
-                                    /*other_facing=*/true);
+      WedgeLi other =
+          renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context, 0, &other_facing);
       result.stats.addCounters(other.stats);
       sheets.push_back(std::move(other));
     }
