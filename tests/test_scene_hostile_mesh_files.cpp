@@ -201,5 +201,34 @@ TEST(SceneHostileMeshFiles, PlyCheckerRefusesUnknownHeaderLines) {
   EXPECT_NO_THROW(checkPlyBytes("x.ply", "ply\nformat ascii 1.0\nelement vertex 0\nend_header\n"));
 }
 
+// assimp 5.2 reads an unknown element's count from its name: a name starting with digits was
+// an allocation of billions of items (a fuzzer's abort inside assimp), and an unknown element
+// before the vertices would have its items read as vertices. Both refused, naming the element;
+// an unknown element after the geometry (Stanford's range_grid) still loads.
+TEST(SceneHostileMeshFiles, PlyElementsAssimpWouldMiscountAreRefused) {
+  ScratchDir dir;
+  const std::string digits =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement 6666666666666666face 1\nproperty list uchar int "
+      "vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string a = dir.write("digits.ply", digits);
+  EXPECT_TRUE(contains(errorMessage([&] { loadMesh(a); }),
+                       "digits.ply: invalid PLY: header line 7: element name "
+                       "'6666666666666666face' starts with a digit"));
+  const std::string before =
+      "ply\nformat ascii 1.0\nelement extra 1\nproperty float w\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n9\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string b = dir.write("before.ply", before);
+  EXPECT_TRUE(contains(errorMessage([&] { loadMesh(b); }),
+                       "before.ply: invalid PLY: element 'extra' (1 items) comes before the "
+                       "'vertex' element"));
+  const std::string after = std::string(kAsciiHeader).insert(
+                                std::string(kAsciiHeader).find("end_header"),
+                                "element range_grid 1\nproperty list uchar int vertex_indices\n") +
+                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n1 0\n";
+  EXPECT_EQ(loadMesh(dir.write("after.ply", after)).triangleCount(), 1u);
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -92,6 +92,7 @@ class PlyChecker {
 
   void run() {
     readHeader();
+    checkUnknownElementsComeLast();
     for (const Element& e : elements_) {
       if (e.name == "vertex") vertex_count_ = e.count;
     }
@@ -175,6 +176,12 @@ class PlyChecker {
           fail("header line {}: element '{}' declares {} items (the limit is {})", line_number,
                words[1], count, kMaxElementCount);
         }
+        if (std::isdigit(static_cast<unsigned char>(words[1][0]))) {
+          // assimp 5.2 reads the count of an element whose name it does not know from the
+          // name itself: "element 66face 2" would be 66 items to it (or billions, and an
+          // allocation of that size).
+          fail("header line {}: element name '{}' starts with a digit", line_number, words[1]);
+        }
         elements_.push_back(Element{std::string(words[1]), count, {}});
         continue;
       }
@@ -184,6 +191,32 @@ class PlyChecker {
         continue;
       }
       fail("header line {}: unknown keyword '{}'", line_number, keyword);
+    }
+  }
+
+  // assimp 5.2 takes the count of an element whose name it does not know (anything but
+  // vertex, face, tristrips, edge and material) as 0 and reads its items as the next element's.
+  // Harmless at the end of the file (Stanford's range_grid), a misread mesh before the
+  // geometry: refuse it there.
+  void checkUnknownElementsComeLast() const {
+    const auto known = [](const std::string& name) {
+      return name == "vertex" || name == "face" || name == "tristrips" || name == "edge" ||
+             name == "material";
+    };
+    const auto geometry = [](const std::string& name) {
+      return name == "vertex" || name == "face" || name == "tristrips";
+    };
+    for (size_t i = 0; i < elements_.size(); ++i) {
+      const Element& e = elements_[i];
+      if (known(e.name) || e.count == 0) continue;
+      for (size_t j = i + 1; j < elements_.size(); ++j) {
+        if (geometry(elements_[j].name)) {
+          fail(
+              "element '{}' ({} items) comes before the '{}' element: assimp 5.2 does not know "
+              "the name and would read its items as the next element's",
+              e.name, e.count, elements_[j].name);
+        }
+      }
     }
   }
 
