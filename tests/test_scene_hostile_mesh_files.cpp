@@ -230,5 +230,17 @@ TEST(SceneHostileMeshFiles, PlyElementsAssimpWouldMiscountAreRefused) {
   EXPECT_EQ(loadMesh(dir.write("after.ply", after)).triangleCount(), 1u);
 }
 
+// A .gltf that is not a glTF: assimp 5.2 falls back to guessing the format from words in the
+// bytes, and on this 24-byte file (a fuzzer's) one guess never returns. Refused before assimp,
+// naming the JSON error; a JSON object without "asset" is refused too.
+TEST(SceneHostileMeshFiles, GltfThatIsNotJsonIsRefusedBeforeAssimp) {
+  ScratchDir dir;
+  const std::string loop = dir.write("loop.gltf", std::string("glglTF{\xafxmgeometrynodels"));
+  EXPECT_TRUE(contains(errorMessage([&] { loadMesh(loop); }), "loop.gltf: not a glTF file: invalid JSON"));
+  const std::string bare = dir.write("bare.gltf", "{\"meshes\": []}");
+  EXPECT_TRUE(contains(errorMessage([&] { loadMesh(bare); }),
+                       "bare.gltf: not a glTF file: asset: missing"));
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -72,6 +72,8 @@ const aiScene& readTriangulatedScene(Assimp::Importer& importer, const std::stri
     }
     scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), kReadFlags, ext.c_str() + 1);
   } else {
+    // A text glTF names its buffers by path: assimp reads the file itself, after the check.
+    if (ext == ".gltf") checkGltfText(path, readBytes(path));
     scene = importer.ReadFile(path, kReadFlags);
   }
   PENUMBRA_CHECK(scene != nullptr, "{}: cannot read mesh: {}", path, importer.GetErrorString());

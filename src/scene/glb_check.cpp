@@ -1,5 +1,7 @@
 #include "scene/glb_check.h"
 
+#include "scene/json_reader.h"
+
 #include <cstdint>
 #include <cstring>
 
@@ -48,6 +50,16 @@ void checkGlbBytes(const std::string& path, std::string_view bytes) {
                    chunk, chunk_length, length - at - 8);
     at += 8 + size_t(chunk_length);
     ++chunk;
+  }
+}
+
+void checkGltfText(const std::string& path, std::string_view bytes) {
+  const JsonReader reader(path + ": not a glTF file");
+  const Json root = reader.parse(std::string(bytes));
+  if (!root.is_object()) reader.fail("", "the top level is not a JSON object");
+  const Json* asset = JsonReader::find(root, "asset");
+  if (asset == nullptr || !asset->is_object()) {
+    reader.fail("asset", "missing (every glTF names its version in an \"asset\" object)");
   }
 }
 

@@ -12,4 +12,10 @@ namespace penumbra {
 // chunks) is checked the same way.
 void checkGlbBytes(const std::string& path, std::string_view bytes);
 
+// A text glTF (.gltf) must be a JSON object with an "asset" object before assimp reads it: on
+// other bytes assimp 5.2 falls back to guessing the format from words in the file, and one
+// such guess loops forever on a 24-byte file a fuzzer found (fuzz/corpus/gltf/). Throws
+// penumbra::Error "<path>: not a glTF file: ..." naming the JSON error's line and column.
+void checkGltfText(const std::string& path, std::string_view bytes);
+
 }  // namespace penumbra
