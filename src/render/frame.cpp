@@ -40,10 +40,15 @@ void FrameRenderer::render(FrameResult& frame) const {
     frame.total.add(frame.lights.back().stats);
   }
   std::vector<const Image<float>*> visibility;
-  for (const TechniqueResult& r : frame.lights) visibility.push_back(&r.visibility);
+  std::vector<const ChannelVisibility*> channels;
+  for (const TechniqueResult& r : frame.lights) {
+    visibility.push_back(&r.visibility);
+    channels.push_back(r.perChannel() ? &r.channels : nullptr);
+  }
   {
     PassTimer timer(frame.total, "shade");
-    shadeFrameInto(scene_, frame.view, frame.eye, visibility, frame.color, context.simd);
+    shadeFrameInto(scene_, frame.view, frame.eye, visibility, frame.color, context.simd,
+                   channels);
   }
 }
 

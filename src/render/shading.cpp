@@ -11,7 +11,8 @@ namespace penumbra {
 namespace {
 
 void checkInputs(const Scene& scene, const View& view, const EyeBuffers& eye,
-                 const std::vector<const Image<float>*>& visibility) {
+                 const std::vector<const Image<float>*>& visibility,
+                 const std::vector<const ChannelVisibility*>& channels) {
   const Image<float>& depth = eye.depth.depth;
   PENUMBRA_CHECK(depth.width() == view.width && depth.height() == view.height &&
                      eye.primitive.width() == view.width && eye.primitive.height() == view.height,
@@ -27,6 +28,17 @@ void checkInputs(const Scene& scene, const View& view, const EyeBuffers& eye,
                    "shading: visibility of light {} is {}x{}, the view is {}x{}", i,
                    visibility[i]->width(), visibility[i]->height(), view.width, view.height);
   }
+  PENUMBRA_CHECK(channels.empty() || channels.size() == scene.lights.size(),
+                 "shading: {} channel visibilities for {} lights", channels.size(),
+                 scene.lights.size());
+  for (size_t i = 0; i < channels.size(); ++i) {
+    if (channels[i] == nullptr || (*channels[i])[0].empty()) continue;
+    for (const Image<float>& channel : *channels[i]) {
+      PENUMBRA_CHECK(channel.width() == view.width && channel.height() == view.height,
+                     "shading: a channel visibility of light {} is {}x{}, the view is {}x{}", i,
+                     channel.width(), channel.height(), view.width, view.height);
+    }
+  }
   const uint64_t triangle_count =
       scene.triangle_offsets.empty() ? 0 : scene.triangle_offsets.back();
   PENUMBRA_CHECK(scene.meshes.empty() || triangle_count == scene.triangleCount(),
@@ -41,14 +53,29 @@ void checkInputs(const Scene& scene, const View& view, const EyeBuffers& eye,
 // Shades every pixel of `out` (view-sized), background included, row by row
 // (render/shading_kernel.h).
 void shadePixels(const Scene& scene, const View& view, const EyeBuffers& eye,
-                 const std::vector<const Image<float>*>& visibility, Image<vec3>& out,
+                 const std::vector<const Image<float>*>& visibility,
+                 const std::vector<const ChannelVisibility*>& channels, Image<vec3>& out,
                  bool simd) {
   ShadingFrame frame;
-  frame.lights.resize(scene.lights.size());
   for (size_t i = 0; i < scene.lights.size(); ++i) {
-    frame.lights[i].center = scene.lights[i].center;
-    frame.lights[i].radiance = scene.lights[i].color * scene.lights[i].intensity;
-    frame.lights[i].visibility = visibility[i] ? visibility[i]->data() : nullptr;
+    const vec3 radiance = lightRadiance(scene.lights[i]);
+    const ChannelVisibility* per_channel = i < channels.size() ? channels[i] : nullptr;
+    if (per_channel != nullptr && !(*per_channel)[0].empty()) {
+      for (int c = 0; c < 3; ++c) {
+        ShadingLight light;
+        light.center = scene.lights[i].center;
+        light.radiance = vec3(0.0f);
+        light.radiance[c] = radiance[c];
+        light.visibility = (*per_channel)[size_t(c)].data();
+        frame.lights.push_back(light);
+      }
+      continue;
+    }
+    ShadingLight light;
+    light.center = scene.lights[i].center;
+    light.radiance = radiance;
+    light.visibility = visibility[i] ? visibility[i]->data() : nullptr;
+    frame.lights.push_back(light);
   }
   frame.depth = eye.depth.depth.data();
   frame.primitive = eye.primitive.data();
@@ -87,11 +114,11 @@ Image<vec3> shadeFrame(const Scene& scene, const View& view, const EyeBuffers& e
 
 void shadeFrameInto(const Scene& scene, const View& view, const EyeBuffers& eye,
                     const std::vector<const Image<float>*>& visibility, Image<vec3>& out,
-                    bool simd) {
-  checkInputs(scene, view, eye, visibility);
+                    bool simd, const std::vector<const ChannelVisibility*>& channels) {
+  checkInputs(scene, view, eye, visibility, channels);
   if (out.width() != view.width || out.height() != view.height)
     out.resize(view.width, view.height);
-  shadePixels(scene, view, eye, visibility, out, simd);
+  shadePixels(scene, view, eye, visibility, channels, out, simd);
 }
 
 }  // namespace penumbra

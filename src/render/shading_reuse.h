@@ -4,17 +4,22 @@
 // the view's size changed and every pixel is written, background included, so no frame pays
 // for allocating, clearing and page-faulting a new full-size colour image. `simd` false runs
 // the scalar twin of the shading kernel (render/shading_kernel.h); both give identical colours.
+// `channels[i]`, when given and not null, is light i's visibility per colour channel (a textured
+// light, shadows/technique.h): the light is shaded as three lights, one per channel, each with
+// its channel's radiance and visibility (shading is linear in both).
 #include <vector>
 
 #include "core/image.h"
 #include "core/view.h"
 #include "raster/depth_buffer.h"
 #include "scene/scene.h"
+#include "shadows/technique.h"
 
 namespace penumbra {
 
 void shadeFrameInto(const Scene& scene, const View& view, const EyeBuffers& eye,
                     const std::vector<const Image<float>*>& visibility, Image<vec3>& out,
-                    bool simd = true);
+                    bool simd = true,
+                    const std::vector<const ChannelVisibility*>& channels = {});
 
 }  // namespace penumbra

@@ -11,6 +11,62 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
+vec3 LightTexture::at(vec2 st) const {
+  const int i = std::clamp(int(std::floor(st.x * float(width))), 0, width - 1);
+  const int j = std::clamp(int(std::floor(st.y * float(height))), 0, height - 1);
+  return texels[size_t(j) * size_t(width) + size_t(i)];
+}
+
+std::shared_ptr<const LightTexture> makeLightTexture(int width, int height,
+                                                     const std::vector<vec3>& texels,
+                                                     const std::string& what) {
+  PENUMBRA_CHECK(width >= 1 && height >= 1 && texels.size() == size_t(width) * size_t(height),
+                 "{}: a light texture needs at least one texel ({}x{} with {} texels)", what,
+                 width, height, texels.size());
+  for (size_t k = 0; k < texels.size(); ++k) {
+    const vec3& t = texels[k];
+    PENUMBRA_CHECK(isFinite(t) && t.x >= 0.0f && t.y >= 0.0f && t.z >= 0.0f,
+                   "{}: texel {} (column {}, row {}) is ({}, {}, {}): texels must be finite and "
+                   ">= 0",
+                   what, k, k % size_t(width), k / size_t(width), t.x, t.y, t.z);
+  }
+  auto texture = std::make_shared<LightTexture>();
+  texture->width = std::min(width, kMaxLightTextureCells);
+  texture->height = std::min(height, kMaxLightTextureCells);
+  // Area box filter: output cell (i, j) averages the input texels over the part of the image it
+  // covers, partial texels by their covered fraction (exact when the sizes divide).
+  const double sx = double(width) / texture->width, sy = double(height) / texture->height;
+  const auto overlap = [](double lo, double hi, int k) {
+    return std::max(0.0, std::min(hi, double(k + 1)) - std::max(lo, double(k)));
+  };
+  dvec3 total(0.0);
+  texture->texels.resize(size_t(texture->width) * size_t(texture->height));
+  for (int j = 0; j < texture->height; ++j) {
+    for (int i = 0; i < texture->width; ++i) {
+      const double x0 = i * sx, x1 = (i + 1) * sx, y0 = j * sy, y1 = (j + 1) * sy;
+      dvec3 sum(0.0);
+      for (int y = int(y0); y < std::min(height, int(std::ceil(y1))); ++y) {
+        const double wy = overlap(y0, y1, y);
+        for (int x = int(x0); x < std::min(width, int(std::ceil(x1))); ++x) {
+          sum += wy * overlap(x0, x1, x) * dvec3(texels[size_t(y) * size_t(width) + size_t(x)]);
+        }
+      }
+      const dvec3 cell = sum / (sx * sy);
+      texture->texels[size_t(j) * size_t(texture->width) + size_t(i)] = vec3(cell);
+      total += cell;
+    }
+  }
+  texture->mean = vec3(total / double(texture->texels.size()));
+  PENUMBRA_CHECK(texture->mean.x + texture->mean.y + texture->mean.z > 0.0f,
+                 "{}: the light texture is black everywhere (it would emit nothing)", what);
+  return texture;
+}
+
+vec3 lightRadiance(const Light& light) {
+  const vec3 radiance = light.color * light.intensity;
+  return light.texture ? radiance * light.texture->mean : radiance;
+}
+
 std::string lightShapeName(LightShape shape) {
   switch (shape) {
     case LightShape::Sphere:
@@ -58,6 +114,16 @@ void checkLightShape(const Light& light) {
   PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
   PENUMBRA_CHECK(std::isfinite(light.radius) && light.radius >= 0.0f,
                  "light radius {} must be a finite number >= 0", light.radius);
+  PENUMBRA_CHECK(!light.texture || light.shape == LightShape::Rectangle,
+                 "a {} light cannot take a texture (only a rectangle light is textured)",
+                 lightShapeName(light.shape));
+  PENUMBRA_CHECK(!light.texture ||
+                     (light.texture->width >= 1 && light.texture->height >= 1 &&
+                      light.texture->width <= kMaxLightTextureCells &&
+                      light.texture->height <= kMaxLightTextureCells &&
+                      light.texture->texels.size() ==
+                          size_t(light.texture->width) * size_t(light.texture->height)),
+                 "light texture is malformed (make it with makeLightTexture)");
   switch (light.shape) {
     case LightShape::Sphere:
       return;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "render/image_io.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_file_impl.h"
 
@@ -121,14 +122,64 @@ void readLightShape(const JsonReader& reader, const Json& entry, const std::stri
               fmt::format("unknown light shape \"{}\" (sphere, disk or rectangle)", shape));
 }
 
-void readLights(const JsonReader& reader, const Json& value, Scene& scene) {
+// A rectangle light's "texture": a PNG file (sRGB, decoded to linear RGB; relative to the scene
+// file) or {"width": W, "height": H, "texels": [[r, g, b], ...]} in linear RGB, row 0 first
+// (light.h gives the mapping onto the rectangle).
+std::shared_ptr<const LightTexture> readLightTexture(const JsonReader& reader, const Json& value,
+                                                     const std::string& path,
+                                                     const std::string& base_dir) {
+  if (value.is_string()) {
+    const std::string file = resolveMeshPath(reader.string(value, path), base_dir);
+    Image<vec3> image;
+    try {
+      image = readPng(file);
+    } catch (const Error& e) {
+      reader.fail(path, e.what());
+    }
+    std::vector<vec3> texels(image.data(), image.data() + image.size());
+    try {
+      return makeLightTexture(image.width(), image.height(), texels, file);
+    } catch (const Error& e) {
+      reader.fail(path, e.what());
+    }
+  }
+  reader.expectObject(value, path, {"width", "height", "texels"});
+  const int width = reader.integer(reader.required(value, path, "width"), JsonReader::child(path, "width"));
+  const int height = reader.integer(reader.required(value, path, "height"), JsonReader::child(path, "height"));
+  if (width < 1 || width > 4096 || height < 1 || height > 4096) {
+    reader.fail(path, fmt::format("width and height must be in 1..4096 (got {}x{})", width, height));
+  }
+  const std::string texels_path = JsonReader::child(path, "texels");
+  const Json& list = reader.required(value, path, "texels");
+  reader.expectArray(list, texels_path);
+  if (list.size() != size_t(width) * size_t(height)) {
+    reader.fail(texels_path, fmt::format("holds {} texels, width x height is {}", list.size(),
+                                         size_t(width) * size_t(height)));
+  }
+  std::vector<vec3> texels;
+  texels.reserve(list.size());
+  for (size_t k = 0; k < list.size(); ++k) {
+    const std::string texel_path = JsonReader::element(texels_path, k);
+    texels.push_back(reader.vector3(list[k], texel_path));
+    checkNonNegative(reader, texels.back(), texel_path);
+  }
+  try {
+    return makeLightTexture(width, height, texels, reader.origin());
+  } catch (const Error& e) {
+    reader.fail(path, e.what());
+  }
+}
+
+void readLights(const JsonReader& reader, const Json& value, Scene& scene,
+                const std::string& base_dir) {
   reader.expectArray(value, "lights");
   if (value.empty()) reader.fail("lights", "needs at least one light");
   for (size_t i = 0; i < value.size(); ++i) {
     const std::string path = JsonReader::element("lights", i);
     const Json& entry = value[i];
     reader.expectObject(entry, path,
-                        {"center", "radius", "color", "intensity", "shape", "normal", "u", "v"});
+                        {"center", "radius", "color", "intensity", "shape", "normal", "u", "v",
+                         "texture"});
     Light light;
     light.center = reader.vector3(reader.required(entry, path, "center"), JsonReader::child(path, "center"));
     readLightShape(reader, entry, path, light);
@@ -144,6 +195,14 @@ void readLights(const JsonReader& reader, const Json& value, Scene& scene) {
     if (light.intensity < 0.0f) {
       reader.fail(JsonReader::child(path, "intensity"),
                   fmt::format("must be >= 0 (got {})", light.intensity));
+    }
+    if (entry.contains("texture")) {
+      const std::string texture_path = JsonReader::child(path, "texture");
+      if (light.shape != LightShape::Rectangle) {
+        reader.fail(texture_path, "only a rectangle light takes a texture (set \"shape\": "
+                                  "\"rectangle\")");
+      }
+      light.texture = readLightTexture(reader, entry["texture"], texture_path, base_dir);
     }
     scene.lights.push_back(light);
   }
@@ -235,7 +294,7 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
   for (size_t i = 0; i < meshes.size(); ++i) {
     readMeshEntry(reader, meshes[i], JsonReader::element("meshes", i), base_dir, scene);
   }
-  readLights(reader, reader.required(root, "", "lights"), scene);
+  readLights(reader, reader.required(root, "", "lights"), scene, base_dir);
   if (const Json* settings = JsonReader::find(root, "settings")) {
     readSettings(reader, *settings, scene.settings);
   }

@@ -1,5 +1,7 @@
 #pragma once
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <penumbra/core/math.h>
 
@@ -17,6 +19,28 @@ enum class LightShape {
 };
 std::string lightShapeName(LightShape shape);  // "sphere", "disk", "rectangle"
 
+// What a textured rectangle light emits over its area (issue 9 item 3; the 2003 soft shadow
+// volumes' textured lights): linear RGB, piecewise constant over a grid of cells. Texel (i, j)
+// covers the part of the rectangle with s in [i / width, (i + 1) / width) along edge_u and
+// t in [j / height, (j + 1) / height) along edge_v, (s, t) = (0, 0) at centre - u/2 - v/2; an
+// image's row 0 is t's first row. A point's visibility of such a light is per channel: the
+// texture-weighted fraction of the light it sees, sum over seen area of texel / sum over all.
+struct LightTexture {
+  int width = 0, height = 0;  // 1..kMaxLightTextureCells each
+  std::vector<vec3> texels;   // row-major, width * height, finite and >= 0
+  vec3 mean{0.0f};            // the average texel (lightRadiance)
+  vec3 at(vec2 st) const;     // the texel holding (s, t) in [0, 1]^2 (edges clamped)
+};
+// Textures are box-filtered down to at most this many cells a side (makeLightTexture): the
+// exact coverage walks the cells an edge crosses.
+inline constexpr int kMaxLightTextureCells = 32;
+// A texture from an image's texels (linear RGB, row-major): box-filtered by area to at most
+// kMaxLightTextureCells a side. Throws penumbra::Error naming `what` for an empty image, texels
+// that are not finite or negative, or a texture that emits nothing.
+std::shared_ptr<const LightTexture> makeLightTexture(int width, int height,
+                                                     const std::vector<vec3>& texels,
+                                                     const std::string& what);
+
 // A light. radius 0 is a point light and every technique must then give exactly the
 // hard-shadow result. For a disk `radius` is the disk's; for a rectangle it is the radius of
 // its bounding sphere (half the diagonal), which rectangleLight keeps consistent and
@@ -30,7 +54,13 @@ struct Light {
   LightShape shape = LightShape::Sphere;
   vec3 normal{0.0f, -1.0f, 0.0f};  // Disk: unit normal
   vec3 edge_u{0.0f}, edge_v{0.0f};  // Rectangle: full edge vectors, orthogonal
+  // Rectangle only: its emission over its area; null emits `color` uniformly.
+  std::shared_ptr<const LightTexture> texture{};
 };
+
+// What the fully visible light sends a point, before the surface's response: color x intensity,
+// times the texture's mean for a textured light.
+vec3 lightRadiance(const Light& light);
 
 Light diskLight(const vec3& center, const vec3& normal, float radius);
 // The rectangle with corners center +- u/2 +- v/2; radius = |u + v| / 2.
@@ -41,7 +71,8 @@ double lightArea(const Light& light);
 
 // Throws penumbra::Error naming what is wrong: a non-finite centre or radius, a negative
 // radius, a disk normal that is not unit length, rectangle edges that are zero, not finite or
-// not orthogonal, or a rectangle radius that is not half its diagonal.
+// not orthogonal, a rectangle radius that is not half its diagonal, or a texture on a light that
+// is not a rectangle.
 void checkLightShape(const Light& light);
 
 // Throws penumbra::Error "<technique> supports only spherical lights, not a <shape> light"

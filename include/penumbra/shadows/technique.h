@@ -10,6 +10,7 @@
 // per-scene state once (the oracle's BVH) and returns an object that renders one light at a
 // time. The kind of technique is decided once, when it is prepared.
 #include <any>
+#include <array>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -35,10 +36,24 @@ struct RenderContext {
   bool show_progress = false;  // progress bar on a terminal for long work
 };
 
+// A textured light's visibility per colour channel (R, G, B), each in [0, 1]: the
+// texture-weighted fraction of the light the point sees (scene/light.h, LightTexture).
+using ChannelVisibility = std::array<Image<float>, 3>;
+
 struct TechniqueResult {
   Image<float> visibility;  // per pixel, in [0, 1]; 1 on background pixels
   Stats stats;
+  // Set by the techniques that see a textured light's texture (reference, heckbert-herf,
+  // coverage) when the light has one; `visibility` is then their mean weighted by the light's
+  // radiance per channel (the fraction of its power that arrives). Empty otherwise: the light
+  // counts as uniform (hard techniques see only its centre) and `visibility` holds for every
+  // channel.
+  ChannelVisibility channels{};
+  bool perChannel() const { return !channels[0].empty(); }
 };
+
+// Fills result.channels and sets result.visibility to their radiance-weighted mean (above).
+void setChannelVisibility(TechniqueResult& result, const Light& light, ChannelVisibility channels);
 
 // A technique prepared for one scene. The scene must outlive it and stay unchanged.
 class PreparedTechnique {

@@ -38,6 +38,7 @@
 #include "shadows/coverage/disk_coverage_kernel.h"
 #include "shadows/coverage/shape_coverage.h"
 #include "shadows/coverage/square_coverage_kernel.h"
+#include "shadows/coverage/textured_coverage.h"
 #include "shadows/exact/edge_bins.h"
 #include "shadows/exact/edge_screen_test.h"
 #include "shadows/exact/potential_edges.h"
@@ -83,6 +84,12 @@ CoverageEdges silhouetteEdgesFromCentre(const Scene& scene, const Light& light,
   return out;
 }
 
+// One coverage pass's visibility: the area share, and per channel for a textured light.
+struct CoverageImages {
+  Image<float> grey;
+  ChannelVisibility rgb;  // empty for an untextured light
+};
+
 struct TileWork {
   uint64_t reads = 0, tests = 0, pairs = 0, inside = 0;
 };
@@ -120,7 +127,12 @@ struct Scratch {
   // The own plane as a half-plane of the light (frontHalfPlane), where it cuts the light.
   dvec2 plane_slope[kBlockPixels];
   double plane_offset[kBlockPixels];
-  float hard[kBlockPixels];  // 1 - the stencil's count of volumes holding the point  // fraction of the light in front of the visible triangle
+  float hard[kBlockPixels];  // 1 - the stencil's count of volumes holding the point
+  // A textured light (textured_coverage.h): per channel, the edges' sum and the own plane's
+  // fraction, and whether the frame reads the texture mirrored.
+  dvec3 sum_rgb[kBlockPixels];
+  dvec3 own_rgb[kBlockPixels];
+  bool flip[kBlockPixels];
   PairBatch batch;
   std::vector<dvec3> a, b;  // an edge's end points in each pixel's frame (double, rectangle)
 };
@@ -162,6 +174,14 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   stencil_options.simd = context.simd;
   // A point light: pass 1 alone, the hard shadow volume bit for bit.
   if (!(light.radius > 0.0f)) return hardShadowVolumes(scene_, light, view, eye, stencil_options);
+  // A textured rectangle (light.h): the exact per-channel path beside the area path.
+  const bool textured = light.texture != nullptr;
+  PENUMBRA_CHECK(!textured || options_.table == CoverageTable::Analytic,
+                 "coverage: the coverage table holds an untextured light's areas; a textured "
+                 "light takes --coverage-table analytic");
+  std::unique_ptr<TexturedSquare> texture;
+  if (textured) texture = std::make_unique<TexturedSquare>(*light.texture);
+  const dvec3 edge_v(light.edge_v);
   const CoverageTableData* table = nullptr;
   TechniqueResult result;
   Stats& stats = result.stats;
@@ -192,7 +212,12 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
       stats.tiles_tested += bins.tiles_tested;
       stats.tiles_culled += bins.tiles_culled;
     }
-    Image<float> soft(width, height, 1.0f);
+    CoverageImages images;
+    images.grey.resize(width, height, 1.0f);
+    if (textured) {
+      for (Image<float>& c : images.rgb) c.resize(width, height, 1.0f);
+    }
+    Image<float>& soft = images.grey;
     {
       PassTimer timer(stats, "coverage");
       const FacingAway away(scene_, light, view);
@@ -223,6 +248,9 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             block.z[i] = eye.depth.depth.at(x, y);
             const int32_t count = stencil.at(x, y);
             soft.at(x, y) = count == 0 ? 1.0f : 0.0f;
+            if (textured) {
+              for (Image<float>& c : images.rgb) c.at(x, y) = count == 0 ? 1.0f : 0.0f;
+            }
             s.hard[i] = 1.0f - float(count);
             const uint32_t id = eye.primitive.at(x, y);
             if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
@@ -230,6 +258,8 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             s.framed[i] = false;
             s.sum[i] = 0.0f;
             s.own_plane[i] = 1.0f;
+            s.sum_rgb[i] = dvec3(0.0);
+            s.own_rgb[i] = dvec3(1.0);
             // The visible triangle's plane cuts the light: the part behind it is blocked by the
             // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is).
             if (!away.clearOfLight(id)) {
@@ -237,12 +267,16 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
               ++work.reads;
               const dvec3 p = view.unproject(x, y, block.z[i]);
               if (coverageFrame(light, p, s.frames[i])) {
+                s.flip[i] = glm::dot(s.frames[i].b, edge_v) < 0.0;
                 const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
-                if (normal != dvec3(0.0))
-                {
+                if (normal != dvec3(0.0)) {
                   frontHalfPlane(s.frames[i], normal, s.plane_slope[i], s.plane_offset[i]);
                   s.own_plane[i] = float(
                       halfPlaneFraction(s.frames[i].outline, s.plane_slope[i], s.plane_offset[i]));
+                  if (textured && s.own_plane[i] < 1.0f) {
+                    s.own_rgb[i] = texture->halfPlaneFraction(s.plane_slope[i],
+                                                              s.plane_offset[i], s.flip[i]);
+                  }
                 }
               } else {
                 block.active &= ~(uint64_t(1) << i);
@@ -269,6 +303,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
                   framed_ok &= ~(uint64_t(1) << i);
                   continue;
                 }
+                s.flip[i] = glm::dot(f.b, edge_v) < 0.0;
               }
               ++work.pairs;
               s.batch.add(f.homogeneous(e.a), f.homogeneous(e.b), edges.weight[*it], i);
@@ -314,6 +349,17 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             }
             if (fraction != 0.0f) ++work.inside;
             s.sum[i] += float(b.weight[k]) * fraction;
+            if (textured) {
+              // Per channel, exact (textured_coverage.h), from the same float end points.
+              dvec2 lo, hi;
+              if (clipToOutline(LightOutline::Square, dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)) {
+                const bool cut = s.own_plane[i] < 1.0f;
+                s.sum_rgb[i] += double(b.weight[k]) *
+                                texture->beyondFraction(lo, hi, s.flip[i], cut, s.plane_slope[i],
+                                                        s.plane_offset[i]);
+              }
+            }
           }
           for (uint64_t active = framed_ok; active != 0; active &= active - 1) {
             const int i = __builtin_ctzll(active);
@@ -322,6 +368,13 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             const float f = s.own_plane[i];
             v = cut_terms && f < 1.0f ? std::clamp(f * s.hard[i] + s.sum[i], 0.0f, f)
                                       : std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), f);
+            if (!textured) continue;
+            for (int c = 0; c < 3; ++c) {
+              const float fc = float(s.own_rgb[i][c]), sum = float(s.sum_rgb[i][c]);
+              images.rgb[size_t(c)].at(s.px[i], s.py[i]) =
+                  f < 1.0f ? std::clamp(fc * s.hard[i] + sum, 0.0f, fc)
+                           : std::clamp(s.hard[i] + sum, 0.0f, 1.0f);
+            }
           }
         }
       });
@@ -331,9 +384,9 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
         stats.penumbra_inside += w.inside;
       }
     }
-    return soft;
+    return images;
   };
-  Image<float> soft = coveragePass(kCoveragePolicy, nullptr);
+  CoverageImages soft = coveragePass(kCoveragePolicy, nullptr);
   // Open meshes cast one facing, and a ray through a hole (a terrain's border under a low
   // light) misses it: the other facing of those meshes, in a pass of its own, counts those
   // rays, and the darker visibility is kept, as the wedges do (wedge_technique.cpp).
@@ -341,14 +394,29 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
                                                 ? openMeshesWithBothFacings(scene_, light.center)
                                                 : std::vector<uint8_t>();
   if (!other_facing.empty()) {
-    const Image<float> other =
+    const CoverageImages other =
         coveragePass(CasterPolicy::SolidWithHolesOtherFacing, &other_facing);
-    for (size_t i = 0; i < soft.size(); ++i) soft[i] = std::min(soft[i], other[i]);
+    for (size_t i = 0; i < soft.grey.size(); ++i) soft.grey[i] = std::min(soft.grey[i], other.grey[i]);
+    if (textured) {
+      for (int c = 0; c < 3; ++c) {
+        Image<float>& mine = soft.rgb[size_t(c)];
+        for (size_t i = 0; i < mine.size(); ++i) mine[i] = std::min(mine[i], other.rgb[size_t(c)][i]);
+      }
+    }
   }
   {
     PassTimer timer(stats, "resolve");
-    resolveVisibility(scene_, light, view, eye, result.visibility,
-                      [&](int x, int y) { return soft.at(x, y); });
+    if (textured) {
+      ChannelVisibility channels;
+      for (int c = 0; c < 3; ++c) {
+        resolveVisibility(scene_, light, view, eye, channels[size_t(c)],
+                          [&](int x, int y) { return soft.rgb[size_t(c)].at(x, y); });
+      }
+      setChannelVisibility(result, light, std::move(channels));
+    } else {
+      resolveVisibility(scene_, light, view, eye, result.visibility,
+                        [&](int x, int y) { return soft.grey.at(x, y); });
+    }
   }
   return result;
 }

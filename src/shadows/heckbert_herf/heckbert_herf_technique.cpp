@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -44,15 +45,37 @@ class HeckbertHerf final : public PreparedTechnique {
     Light point = light;
     point.shape = LightShape::Sphere;
     point.radius = 0.0f;
+    point.texture = nullptr;
+    // A textured light (light.h): each render weighs, per channel, the texel its point is on;
+    // the weighted sums run in the points' order, whatever the threads.
+    const bool textured = light.texture != nullptr;
+    ChannelVisibility weighted;
+    dvec3 total_weight(0.0);
+    if (textured) {
+      for (Image<float>& c : weighted) c.resize(width, height, 0.0f);
+    }
+    const dvec3 u(light.edge_u), v(light.edge_v);
     for (const vec3& q : points) {
       point.center = q;
       TechniqueResult hard = hardShadowVolumes(scene_, point, view, eye, stencil_options);
       result.stats.addCounters(hard.stats);
       PassTimer timer(result.stats, "average");
+      vec3 weight(0.0f);
+      if (textured) {
+        const dvec3 d = dvec3(q) - dvec3(light.center);
+        weight = light.texture->at(vec2(float(glm::dot(d, u) / glm::dot(u, u) + 0.5),
+                                        float(glm::dot(d, v) / glm::dot(v, v) + 0.5)));
+        total_weight += dvec3(weight);
+      }
       parallelFor(size_t(height), [&](size_t y) {
-        const float* v = hard.visibility.row(int(y));
+        const float* vis = hard.visibility.row(int(y));
         uint16_t* row = lit.data() + y * size_t(width);
-        for (int x = 0; x < width; ++x) row[x] = uint16_t(row[x] + (v[x] > 0.5f ? 1 : 0));
+        for (int x = 0; x < width; ++x) row[x] = uint16_t(row[x] + (vis[x] > 0.5f ? 1 : 0));
+        if (!textured) return;
+        for (int c = 0; c < 3; ++c) {
+          float* out = weighted[size_t(c)].row(int(y));
+          for (int x = 0; x < width; ++x) out[x] += vis[x] > 0.5f ? weight[c] : 0.0f;
+        }
       });
     }
     PassTimer timer(result.stats, "resolve");
@@ -63,6 +86,17 @@ class HeckbertHerf final : public PreparedTechnique {
       float* out = result.visibility.row(int(y));
       for (int x = 0; x < width; ++x) out[x] = float(row[x]) * scale;
     });
+    if (textured) {
+      for (int c = 0; c < 3; ++c) {
+        // A channel the points never saw lit emits nothing there: it counts as visible.
+        const float inv = total_weight[c] > 0.0 ? float(1.0 / total_weight[c]) : 0.0f;
+        Image<float>& channel = weighted[size_t(c)];
+        for (size_t i = 0; i < channel.size(); ++i) {
+          channel[i] = inv > 0.0f ? std::min(1.0f, channel[i] * inv) : 1.0f;
+        }
+      }
+      setChannelVisibility(result, light, std::move(weighted));
+    }
     return result;
   }
 

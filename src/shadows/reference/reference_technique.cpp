@@ -86,6 +86,12 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
   const double radius = light.radius;
   const bool planar = light.shape != LightShape::Sphere;
   std::vector<RowCounters> row_counters(static_cast<size_t>(height));
+  // A textured light (light.h): each sample weighs the texel it lands on, per channel.
+  const bool textured = !hard && light.texture != nullptr;
+  ChannelVisibility channels;
+  if (textured) {
+    for (Image<float>& c : channels) c.resize(width, height, 1.0f);
+  }
   ProgressBar progress("reference", uint64_t(height), context.show_progress);
 
   // One work item per row: rows never share pixels, each pixel's rays are a function of the
@@ -127,6 +133,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
     }
 
     std::vector<vec2> samples(static_cast<size_t>(n));
+    std::vector<int> sample_of(static_cast<size_t>(n));  // a traced ray's sample
     const bool fixed = options.samples == SampleSet::Fixed;
     if (fixed) fixedSamples(n, options.seed, samples.data());
     rays.resize(size_t(n));
@@ -148,6 +155,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
           const double distance = glm::length(to_target);
           if (!(distance > 0.0)) continue;  // the point is on the light: nothing in between
           if (start.intoSurface(target)) continue;
+          sample_of[traced] = k;
           rays[traced++] = makeRay(origin, vec3(to_target / distance), distance);
         }
       } else {
@@ -167,6 +175,18 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
       for (size_t k = 0; k < traced; ++k) unblocked += blocked[k] ? 0 : 1;
       visibility[x] = float(unblocked) / float(n);
       counters.rays += uint64_t(n);
+      if (textured) {
+        // Each sample weighs what the texture emits there; samples not traced (behind the
+        // surface) count as blocked, as above.
+        dvec3 seen(0.0), all(0.0);
+        for (int k = 0; k < n; ++k) all += dvec3(light.texture->at(samples[size_t(k)]));
+        for (size_t k = 0; k < traced; ++k) {
+          if (!blocked[k]) seen += dvec3(light.texture->at(samples[size_t(sample_of[k])]));
+        }
+        for (int c = 0; c < 3; ++c) {
+          channels[size_t(c)].at(x, y) = all[c] > 0.0 ? float(seen[c] / all[c]) : 1.0f;
+        }
+      }
     }
     progress.add();
   });
@@ -176,6 +196,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
     stats.z_reads += c.z_reads;
     stats.rays += c.rays;
   }
+  if (textured) setChannelVisibility(result, light, std::move(channels));
   return result;
 }
 
