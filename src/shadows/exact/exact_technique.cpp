@@ -77,7 +77,8 @@ struct TileWork {
 class ExactSoftShadows final : public PreparedTechnique {
  public:
   ExactSoftShadows(const ExactOptions& options, const Scene& scene)
-      : options_(options), scene_(scene), samples_(makeSampleSet(options.samples, options.seed)) {}
+      : options_(options), scene_(scene), bounds_(scene.bounds()),
+        samples_(makeSampleSet(options.samples, options.seed)) {}
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override;
@@ -89,6 +90,7 @@ class ExactSoftShadows final : public PreparedTechnique {
 
   ExactOptions options_;
   const Scene& scene_;
+  Bounds3 bounds_;  // of every visible point (binEdges)
   SampleSet samples_;
 };
 
@@ -192,7 +194,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   {
     PassTimer timer(stats, "binning");
     bins = binEdges(edges, light, view, eye.depth, options_.tile_level,
-                    kMaxOriginOffsetFootprints);
+                    kMaxOriginOffsetFootprints, bounds_);
     stats.tiles_tested += bins.tiles_tested;
     stats.tiles_culled += bins.tiles_culled;
   }
