@@ -35,9 +35,14 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
                              hn::Mul(hn::Set(df, p[2]), z)),
                      hn::Set(df, p[3]));
     };
+    // Most pixels of a binned tile lie outside the edge's thin region: once every lane is out,
+    // the remaining planes cannot bring one back (the scalar twin stops per pixel the same way).
     auto keep = hn::FirstN(df, lanes);  // all true
-    for (int k = 0; k < t.region_count; ++k)
+    for (int k = 0; k < t.region_count; ++k) {
       keep = hn::And(keep, hn::Ge(planeAt(t.region[k]), hn::Set(df, -t.region_margin[k])));
+      if (hn::AllFalse(df, keep)) break;
+    }
+    if (hn::AllFalse(df, keep)) continue;
     if (t.triangle_count > 0) {
       auto unknown = hn::FirstN(df, 0);  // all false
       auto weight = hn::Zero(di);
