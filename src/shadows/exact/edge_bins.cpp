@@ -28,10 +28,12 @@ struct Region {
   std::array<ScreenPlaneD, kMaxRegionPlanes> planes;
   int plane_count = 0;
   // The edge's triangles' planes, for the silhouette test (EdgeTriangle); triangle_count 0
-  // when there are more than kMaxTileTriangles.
+  // when there are more than kMaxTileTriangles. The tile test uses them only when no triangle
+  // cuts the light (`tile_signs`); the pixels' quick reject always.
   std::array<ScreenPlaneD, kMaxTileTriangles> triangles;
   std::array<const EdgeTriangle*, kMaxTileTriangles> triangle;
   int triangle_count = 0;
+  bool tile_signs = false;
   int tx0 = 0, ty0 = 0, tx1 = -1, ty1 = -1;  // tiles of the screen box, inclusive
 };
 
@@ -48,16 +50,15 @@ class RegionBuilder {
 
   Region region(const PotentialEdge& e, const EdgeTriangle* triangles) const {
     Region region;
-    // The silhouette test needs every triangle's inclusion from the sides alone: not with a
-    // triangle cutting the light (its inclusion depends on distances, pixel_edges.cpp).
-    bool signs_decide = e.triangle_count <= uint32_t(kMaxTileTriangles);
-    for (uint32_t k = 0; k < e.triangle_count && signs_decide; ++k)
-      signs_decide = !triangles[e.first_triangle + k].cuts;
-    if (signs_decide) {
+    // The tile's silhouette test needs every triangle's inclusion from the sides alone: not
+    // with a triangle cutting the light (its inclusion depends on distances, pixel_edges.cpp).
+    if (e.triangle_count <= uint32_t(kMaxTileTriangles)) {
+      region.tile_signs = true;
       for (uint32_t k = 0; k < e.triangle_count; ++k) {
         const EdgeTriangle& t = triangles[e.first_triangle + k];
         region.triangles[k] = screenPlane(t.normal, t.offset);
         region.triangle[k] = &t;
+        region.tile_signs &= !t.cuts;
       }
       region.triangle_count = int(e.triangle_count);
     }
@@ -111,7 +112,7 @@ class RegionBuilder {
     for (int i = 0; i < region.plane_count; ++i) {
       if (planeMax(region.planes[size_t(i)], x0, x1, y0, y1, z0, z1) < -margin) return true;
     }
-    if (region.triangle_count == 0) return false;
+    if (region.triangle_count == 0 || !region.tile_signs) return false;
     int weight = 0;
     for (int k = 0; k < region.triangle_count; ++k) {
       const ScreenPlaneD& p = region.triangles[size_t(k)];
@@ -401,6 +402,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   const RegionBuilder builder(light, view, level, bounded, bounds_min - dvec3(pad),
                               bounds_max + dvec3(pad));
   bins.tests.resize(edges.edges.size());
+  const dvec3 light_centre(light.center);
   bins.cutting_tests.resize(edges.cutting.size());
   // Float evaluation error of E at any pixel centre of the image with z in [0, 1]: four
   // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp).
@@ -487,11 +489,26 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
         for (int k = 0; k < region.plane_count; ++k)
           toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
         test.triangle_count = region.triangle_count;
+        const PotentialEdge& e = edges.edges[i];
+        auto fromLight = [&](const dvec3& v, float out[3]) {
+          const dvec3 d = v - light_centre;
+          out[0] = float(d.x);
+          out[1] = float(d.y);
+          out[2] = float(d.z);
+          return glm::length(d);
+        };
+        const double ends_extent = std::max(fromLight(e.a, test.ends[0]), fromLight(e.b, test.ends[1]));
         for (int k = 0; k < region.triangle_count; ++k) {
           const EdgeTriangle& t = *region.triangle[size_t(k)];
           toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
           test.light_above[k] = t.light_above;
-          test.weight[k] = t.light_above ? t.winding : -t.winding;
+          test.cuts[k] = t.cuts;
+          // A cutting triangle in front of the light counts on either side: -winding where its
+          // plane value is positive, +winding where negative (edgeAtPixel: weight -= winding *
+          // sign); the kernel adds `weight` on the positive side and subtracts it on the other.
+          test.weight[k] = t.cuts ? -t.winding : t.light_above ? t.winding : -t.winding;
+          const double extent = std::max(ends_extent, fromLight(t.opposite, test.opposite[k]));
+          test.cut_extent[k] = float((extent + double(light.radius)) * (1.0 + 1e-6));
         }
         return region;
       },

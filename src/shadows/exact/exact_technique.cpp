@@ -206,6 +206,9 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     const FacingAway away(scene_, light, view);
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
     const int tile = 1 << bins.level;
+    const dvec3 light_centre(light.center), eye_position(view.eye);
+    // A pixel footprint at unit distance, at the image centre (ray_origin.h).
+    const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
     std::vector<TileWork> tile_work(tiles);
     ProgressBar progress("exact", tiles, context.show_progress);
     parallelFor(tiles, [&](size_t index) {
@@ -232,8 +235,26 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           block.sx[i] = float(x) + 0.5f;
           block.sy[i] = float(y) + 0.5f;
           block.z[i] = eye.depth.depth.at(x, y);
+          block.qx[i] = block.qy[i] = block.qz[i] = block.reach[i] = block.slack[i] = 0.0f;
           const uint32_t id = eye.primitive.at(x, y);
           if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
+          {
+            // The cutting triangles' test (PixelBlock): q from the depth-buffer point, the
+            // shaded point within kMaxOriginOffsetFootprints footprints of it, and a relative
+            // eps of 1e-5 against the float rounding of q, the corners and the sums (some
+            // 1e-7 of |v'| |q|) and classifyCutting's own margins (1e-9 |q|^2).
+            const dvec3 p0 = view.unproject(x, y, block.z[i]);
+            const dvec3 q = light_centre - p0;
+            const double q_length = glm::length(q);
+            const double offset =
+                kMaxOriginOffsetFootprints * pixel_angle * glm::length(p0 - eye_position) * 1.01;
+            constexpr double kEps = 1e-5;
+            block.qx[i] = float(q.x);
+            block.qy[i] = float(q.y);
+            block.qz[i] = float(q.z);
+            block.reach[i] = float((double(light.radius) + kEps * q_length) * q_length * (1.0 + 1e-6));
+            block.slack[i] = float((offset + kEps * q_length) * (1.0 + 1e-6));
+          }
           ++work.reads;
           PixelFrame& f = scratch.frames[i];
           f.ready = false;
