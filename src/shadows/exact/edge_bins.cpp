@@ -503,6 +503,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
           toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
           test.light_above[k] = t.light_above;
           test.cuts[k] = t.cuts;
+          test.any_cuts |= t.cuts;
           // A cutting triangle in front of the light counts on either side: -winding where its
           // plane value is positive, +winding where negative (edgeAtPixel: weight -= winding *
           // sign); the kernel adds `weight` on the positive side and subtracts it on the other.

@@ -37,6 +37,7 @@ struct EdgeScreenTest {
   float opposite[4][3];    // each triangle's third corner
   float cut_extent[4];     // the largest |v'| of the triangle's corners plus r, rounded up
   bool cuts[4];
+  bool any_cuts = false;  // one of cuts[0 .. triangle_count)
 };
 
 // Up to 64 pixels: screen position of the centre and stored depth; `active` has bit i set for
