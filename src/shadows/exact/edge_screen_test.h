@@ -50,6 +50,7 @@ struct alignas(64) PixelBlock {
   float sx[kBlockPixels], sy[kBlockPixels], z[kBlockPixels];
   float qx[kBlockPixels], qy[kBlockPixels], qz[kBlockPixels];
   float reach[kBlockPixels], slack[kBlockPixels];
+  bool has_q = false;  // false: q, reach and slack unset, every cutting triangle keeps the pixel
   uint64_t active = 0;
 };
 

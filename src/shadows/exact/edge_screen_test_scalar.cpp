@@ -27,9 +27,11 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& t, const PixelBlock& block) 
         const bool negative = e < -t.triangle_margin[k];
         unknown |= !positive && !negative;
         if (t.cuts[k]) {
-          const float deepest =
-              std::max(std::max(depth(t.ends[0]), depth(t.ends[1])), depth(t.opposite[k]));
-          const bool in_front = (deepest + block.reach[i]) + block.slack[i] * t.cut_extent[k] < 0.0f;
+          // No proof without q: the pixel is kept.
+          const bool in_front =
+              block.has_q &&
+              (std::max(std::max(depth(t.ends[0]), depth(t.ends[1])), depth(t.opposite[k])) +
+               block.reach[i]) + block.slack[i] * t.cut_extent[k] < 0.0f;
           unknown |= !in_front;
           if (positive) weight += t.weight[k];
           if (negative) weight -= t.weight[k];

@@ -46,20 +46,20 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
     if (t.triangle_count > 0) {
       auto unknown = hn::FirstN(df, 0);  // all false
       auto weight = hn::Zero(di);
-      const auto qx = hn::Load(df, block.qx + i);
-      const auto qy = hn::Load(df, block.qy + i);
-      const auto qz = hn::Load(df, block.qz + i);
       // (v0 qx + v1 qy) + v2 qz, as the scalar twin.
       auto depth = [&](const float* v) {
-        return hn::Add(hn::Add(hn::Mul(hn::Set(df, v[0]), qx), hn::Mul(hn::Set(df, v[1]), qy)),
-                       hn::Mul(hn::Set(df, v[2]), qz));
+        return hn::Add(hn::Add(hn::Mul(hn::Set(df, v[0]), hn::Load(df, block.qx + i)),
+                               hn::Mul(hn::Set(df, v[1]), hn::Load(df, block.qy + i))),
+                       hn::Mul(hn::Set(df, v[2]), hn::Load(df, block.qz + i)));
       };
       for (int k = 0; k < t.triangle_count; ++k) {
         const auto e = planeAt(t.triangle[k]);
         const auto positive = hn::Gt(e, hn::Set(df, t.triangle_margin[k]));
         const auto negative = hn::Lt(e, hn::Set(df, -t.triangle_margin[k]));
         unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
-        if (t.cuts[k]) {
+        if (t.cuts[k] && !block.has_q) {
+          unknown = hn::FirstN(df, lanes);  // all true: no proof without q
+        } else if (t.cuts[k]) {
           const auto deepest =
               hn::Max(hn::Max(depth(t.ends[0]), depth(t.ends[1])), depth(t.opposite[k]));
           const auto in_front = hn::Lt(

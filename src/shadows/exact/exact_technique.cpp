@@ -260,6 +260,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         }
         for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
         if (block.active == 0) continue;
+        block.has_q = tile_cuts;
         if (tile_cuts) {
           // The cutting triangles' test (PixelBlock): q from the depth-buffer point, the
           // shaded point within kMaxOriginOffsetFootprints footprints of it, and a relative
