@@ -5,7 +5,7 @@
 # the other in the same run (frame = eye pass + shadows + shading, the technique prepared once:
 # the oracle's BVH build is not in it).
 #
-#   bench/exact_vs_oracle.sh [--samples N] [--size WxH] [--frames R] [scene ...]
+#   [PENUMBRA_BIN=build/penumbra] bench/exact_vs_oracle.sh [--samples N] [--size WxH] [--frames R] [scene ...]
 # Default: every built-in scene and scene file at its own size, N = 256, R = 3 timed frames
 # after one warm-up. Writes under out/exact_vs_oracle/: the two visibility EXRs, the depth
 # (mask) and a heat map per scene.
@@ -26,7 +26,7 @@ done
 if [[ ${#scenes[@]} -eq 0 ]]; then
   scenes=(spheres columns fractal year2002 multilight scenes/*.json)
 fi
-bin=build/penumbra
+bin=${PENUMBRA_BIN:-build/penumbra}  # another build: PENUMBRA_BIN=path/to/penumbra
 out=out/exact_vs_oracle
 mkdir -p "$out"
 printf '%-28s %10s %12s %10s %10s %8s\n' scene differing "of covered" exact_ms oracle_ms ratio

@@ -4,6 +4,7 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 #include "core/parallel.h"
 
@@ -27,34 +28,37 @@ struct Region {
   std::array<ScreenPlaneD, kMaxRegionPlanes> planes;
   int plane_count = 0;
   // The edge's triangles' planes, for the silhouette test (EdgeTriangle); triangle_count 0
-  // when there are more than kMaxTileTriangles.
+  // when there are more than kMaxTileTriangles. The tile test uses them only when no triangle
+  // cuts the light (`tile_signs`); the pixels' quick reject always.
   std::array<ScreenPlaneD, kMaxTileTriangles> triangles;
   std::array<const EdgeTriangle*, kMaxTileTriangles> triangle;
   int triangle_count = 0;
+  bool tile_signs = false;
   int tx0 = 0, ty0 = 0, tx1 = -1, ty1 = -1;  // tiles of the screen box, inclusive
 };
 
 class RegionBuilder {
  public:
-  RegionBuilder(const Light& light, const View& view, int level)
+  RegionBuilder(const Light& light, const View& view, int level, bool bounded,
+                const dvec3& reach_min, const dvec3& reach_max)
       : c_(light.center), r_(light.radius), width_(view.width), height_(view.height),
-        level_(level), near_(0.5 * double(view.near_plane)) {
+        level_(level), near_(0.5 * double(view.near_plane)), reach_min_(reach_min),
+        reach_max_(reach_max), bounded_(bounded) {
     vp_ = dmat4(view.view_projection);
     plane_to_clip_ = glm::transpose(glm::inverse(vp_));
   }
 
   Region region(const PotentialEdge& e, const EdgeTriangle* triangles) const {
     Region region;
-    // The silhouette test needs every triangle's inclusion from the sides alone: not with a
-    // triangle cutting the light (its inclusion depends on distances, pixel_edges.cpp).
-    bool signs_decide = e.triangle_count <= uint32_t(kMaxTileTriangles);
-    for (uint32_t k = 0; k < e.triangle_count && signs_decide; ++k)
-      signs_decide = !triangles[e.first_triangle + k].cuts;
-    if (signs_decide) {
+    // The tile's silhouette test needs every triangle's inclusion from the sides alone: not
+    // with a triangle cutting the light (its inclusion depends on distances, pixel_edges.cpp).
+    if (e.triangle_count <= uint32_t(kMaxTileTriangles)) {
+      region.tile_signs = true;
       for (uint32_t k = 0; k < e.triangle_count; ++k) {
         const EdgeTriangle& t = triangles[e.first_triangle + k];
         region.triangles[k] = screenPlane(t.normal, t.offset);
         region.triangle[k] = &t;
+        region.tile_signs &= !t.cuts;
       }
       region.triangle_count = int(e.triangle_count);
     }
@@ -108,7 +112,7 @@ class RegionBuilder {
     for (int i = 0; i < region.plane_count; ++i) {
       if (planeMax(region.planes[size_t(i)], x0, x1, y0, y1, z0, z1) < -margin) return true;
     }
-    if (region.triangle_count == 0) return false;
+    if (region.triangle_count == 0 || !region.tile_signs) return false;
     int weight = 0;
     for (int k = 0; k < region.triangle_count; ++k) {
       const ScreenPlaneD& p = region.triangles[size_t(k)];
@@ -178,10 +182,13 @@ class RegionBuilder {
   // inside a square pyramid of four directions. Vertices of the hull cut at w = near are the
   // corners in front of it and the crossings of its edges with it; directions away from the
   // eye add their vanishing points. A cone with directions both toward and away from the eye
-  // reaches the screen's border, so the box is the whole screen then.
+  // reaches the screen's border, so the box is the whole screen then. Only the part where a
+  // shaded point can be matters, inside the reach box (boundedBox): that cuts the cones off
+  // where they leave the scene, before their vanishing points.
   void screenBox(Region& region, const dvec3* ends, int end_count) const {
     std::array<dvec4, 3> points;
     std::array<dvec4, 12> directions;
+    std::array<dvec3, 12> world_directions;  // the same, in world space
     bool full = false;
     for (int k = 0; k < end_count && !full; ++k) {
       const dvec3 end = ends[k];
@@ -201,10 +208,15 @@ class RegionBuilder {
       const double spread = tan_alpha * (1.0 + 1e-6) + 1e-9;
       for (int s = 0; s < 4; ++s) {
         const dvec3 d = w + spread * ((s & 1 ? 1.0 : -1.0) * t1 + (s & 2 ? 1.0 : -1.0) * t2);
+        world_directions[size_t(k * 4 + s)] = d;
         directions[size_t(k * 4 + s)] = vp_ * dvec4(d, 0.0);
       }
     }
     const int direction_count = 4 * end_count;
+    if (!full && bounded_ &&
+        boundedBox(region, ends, end_count, points.data(), directions.data(),
+                   world_directions.data()))
+      return;
     int positive = 0, negative = 0;
     if (!full) {
       for (int k = 0; k < direction_count; ++k) {
@@ -243,14 +255,103 @@ class RegionBuilder {
         for (int j = 0; j < direction_count; ++j) extend(directions[size_t(j)]);
       if (x0 > x1) return;  // nothing in front of the eye
     }
-    const int tile = 1 << level_;
-    const int columns = (width_ + tile - 1) / tile, rows = (height_ + tile - 1) / tile;
     if (full) {
+      const int tile = 1 << level_;
       region.tx0 = region.ty0 = 0;
-      region.tx1 = columns - 1;
-      region.ty1 = rows - 1;
+      region.tx1 = (width_ + tile - 1) / tile - 1;
+      region.ty1 = (height_ + tile - 1) / tile - 1;
       return;
     }
+    tileBox(region, x0, x1, y0, y1);
+  }
+
+  // The hull of the corners and their cones (4 directions each) cut by a slab: with a unit
+  // w that every direction d moves along (w.d > 0) and h the reach box's largest w.x, every
+  // point x = sum l_i v_i + sum m_j d_j of the hull with w.x <= h lies in the hull of the
+  // corners v_i and the points v_i + (h - w.v_i) / (w.d_j) d_j (split the m_j among the
+  // corners in proportion to l_i (h - w.v_i)), so that finite hull, cut at w = near, bounds
+  // the region's part inside the reach box. Of the slabs the box's six faces and the
+  // direction away from the light give, the one with the shortest cones is taken (a floor
+  // under a shadow cuts it where it lands). False when none fits (a cone too wide, a corner
+  // beyond every slab): the unbounded hull's box is used then.
+  bool boundedBox(Region& region, const dvec3* ends, int end_count, const dvec4* points,
+                  const dvec4* directions, const dvec3* world_directions) const {
+    const int direction_count = 4 * end_count;
+    dvec3 candidates[7] = {dvec3(1, 0, 0), dvec3(-1, 0, 0), dvec3(0, 1, 0), dvec3(0, -1, 0),
+                           dvec3(0, 0, 1), dvec3(0, 0, -1), dvec3(0.0)};
+    for (int k = 0; k < end_count; ++k) candidates[6] += glm::normalize(ends[k] - c_);
+    double best_length = std::numeric_limits<double>::infinity();
+    dvec3 w(0.0);
+    double h = 0.0;
+    for (const dvec3& candidate : candidates) {
+      const double length = glm::length(candidate);
+      if (!(length > 1e-9)) continue;
+      const dvec3 u = candidate / length;
+      const double top = glm::dot(glm::max(u, dvec3(0.0)), reach_max_) +
+                         glm::dot(glm::min(u, dvec3(0.0)), reach_min_);
+      double longest = 0.0;  // the largest cone parameter, (h - w.v) / (w.d)
+      for (int j = 0; j < direction_count && longest < best_length; ++j) {
+        const dvec3& d = world_directions[j];
+        const double along = glm::dot(u, d);
+        if (!(along > 1e-6 * glm::length(d))) {
+          longest = best_length;
+          break;
+        }
+        for (int k = 0; k < end_count; ++k) {
+          const double gap = top - glm::dot(u, ends[k]);
+          longest = gap >= 0.0 ? std::max(longest, gap / along) : best_length;
+        }
+      }
+      if (longest < best_length) {
+        best_length = longest;
+        w = u;
+        h = top;
+      }
+    }
+    if (!(best_length < std::numeric_limits<double>::infinity())) return false;
+    // Hull points in clip space (linear in the world point).
+    std::array<dvec4, 3 + 3 * 12> hull;
+    int count = 0;
+    for (int k = 0; k < end_count; ++k) {
+      const double gap = h - glm::dot(w, ends[k]);
+      hull[size_t(count++)] = points[k];
+      for (int j = 0; j < direction_count; ++j)
+        hull[size_t(count++)] =
+            points[k] + (gap / glm::dot(w, world_directions[j])) * directions[j];
+    }
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    auto extend = [&](const dvec4& clip) {
+      const double x = clip.x / clip.w, y = clip.y / clip.w;
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
+    };
+    // The hull cut at w = near: the points in front and the crossings of the segments
+    // between a point in front and one behind.
+    bool behind = false;
+    for (int i = 0; i < count; ++i) {
+      if (hull[size_t(i)].w >= near_) extend(hull[size_t(i)]);
+      behind |= hull[size_t(i)].w < near_;
+    }
+    if (behind) {
+      for (int i = 0; i < count; ++i) {
+        for (int j = i + 1; j < count; ++j) {
+          const dvec4& p = hull[size_t(i)];
+          const dvec4& q = hull[size_t(j)];
+          if ((p.w < near_) == (q.w < near_)) continue;
+          extend(p + ((near_ - p.w) / (q.w - p.w)) * (q - p));
+        }
+      }
+    }
+    if (x0 <= x1) tileBox(region, x0, x1, y0, y1);  // else nothing in front of the eye
+    return true;
+  }
+
+  // The tiles of an NDC box.
+  void tileBox(Region& region, double x0, double x1, double y0, double y1) const {
+    const int tile = 1 << level_;
+    const int columns = (width_ + tile - 1) / tile, rows = (height_ + tile - 1) / tile;
     // NDC to pixels (y down), one pixel of slack, clamped before the conversion to int.
     const double px0 = (x0 + 1.0) * 0.5 * width_ - 1.0, px1 = (x1 + 1.0) * 0.5 * width_ + 1.0;
     const double py0 = (1.0 - y1) * 0.5 * height_ - 1.0, py1 = (1.0 - y0) * 0.5 * height_ + 1.0;
@@ -265,13 +366,16 @@ class RegionBuilder {
   double r_;
   int width_, height_, level_;
   double near_;
+  dvec3 reach_min_, reach_max_;  // a box holding every shaded point
+  bool bounded_;                 // false: no such box is known
   dmat4 vp_, plane_to_clip_;
 };
 
 }  // namespace
 
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
-                  const DepthBuffer& depth, int level, double margin_footprints) {
+                  const DepthBuffer& depth, int level, double margin_footprints,
+                  const Bounds3& scene_bounds) {
   EdgeBins bins;
   bins.level = level;
   const int tile = 1 << level;
@@ -283,8 +387,22 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
   const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
   const double margin = margin_footprints * pixel_angle;
-  const RegionBuilder builder(light, view, level);
+  // Every shaded point lies within margin_footprints pixel footprints (distance to the eye
+  // times the pixel angle) of a visible point of the scene; the box is widened by that at the
+  // scene's farthest corner, and a little more for rounding.
+  const bool bounded =
+      !scene_bounds.empty() && isFinite(scene_bounds.min) && isFinite(scene_bounds.max);
+  const dvec3 bounds_min = bounded ? dvec3(scene_bounds.min) : dvec3(0.0);
+  const dvec3 bounds_max = bounded ? dvec3(scene_bounds.max) : dvec3(0.0);
+  const dvec3 eye(view.eye);
+  const double farthest =
+      glm::length(glm::max(glm::abs(bounds_min - eye), glm::abs(bounds_max - eye)));
+  const double pad = margin_footprints * pixel_angle * farthest * 1.01 +
+                     1e-6 * (glm::length(bounds_max - bounds_min) + glm::length(eye) + farthest);
+  const RegionBuilder builder(light, view, level, bounded, bounds_min - dvec3(pad),
+                              bounds_max + dvec3(pad));
   bins.tests.resize(edges.edges.size());
+  const dvec3 light_centre(light.center);
   bins.cutting_tests.resize(edges.cutting.size());
   // Float evaluation error of E at any pixel centre of the image with z in [0, 1]: four
   // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp).
@@ -371,11 +489,27 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
         for (int k = 0; k < region.plane_count; ++k)
           toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
         test.triangle_count = region.triangle_count;
+        const PotentialEdge& e = edges.edges[i];
+        auto fromLight = [&](const dvec3& v, float out[3]) {
+          const dvec3 d = v - light_centre;
+          out[0] = float(d.x);
+          out[1] = float(d.y);
+          out[2] = float(d.z);
+          return glm::length(d);
+        };
+        const double ends_extent = std::max(fromLight(e.a, test.ends[0]), fromLight(e.b, test.ends[1]));
         for (int k = 0; k < region.triangle_count; ++k) {
           const EdgeTriangle& t = *region.triangle[size_t(k)];
           toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
           test.light_above[k] = t.light_above;
-          test.weight[k] = t.light_above ? t.winding : -t.winding;
+          test.cuts[k] = t.cuts;
+          test.any_cuts |= t.cuts;
+          // A cutting triangle in front of the light counts on either side: -winding where its
+          // plane value is positive, +winding where negative (edgeAtPixel: weight -= winding *
+          // sign); the kernel adds `weight` on the positive side and subtracts it on the other.
+          test.weight[k] = t.cuts ? -t.winding : t.light_above ? t.winding : -t.winding;
+          const double extent = std::max(ends_extent, fromLight(t.opposite, test.opposite[k]));
+          test.cut_extent[k] = float((extent + double(light.radius)) * (1.0 + 1e-6));
         }
         return region;
       },

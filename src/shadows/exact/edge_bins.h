@@ -32,7 +32,11 @@ struct EdgeBins {
   std::vector<EdgeScreenTest> cutting_tests;
   uint64_t tiles_tested = 0, tiles_culled = 0;
 };
+// `scene_bounds`, when not empty, holds every visible point (Scene::bounds): the regions are cut
+// off where they leave it (widened by the margin), which keeps a shadow's streak toward its
+// vanishing point from reaching across the screen.
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
-                  const DepthBuffer& depth, int level, double margin_footprints);
+                  const DepthBuffer& depth, int level, double margin_footprints,
+                  const Bounds3& scene_bounds = Bounds3());
 
 }  // namespace penumbra

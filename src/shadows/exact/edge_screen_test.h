@@ -26,12 +26,31 @@ struct EdgeScreenTest {
   bool light_above[4];
   int32_t weight[4];
   int triangle_count = 0;  // 0: no silhouette test (more than 4 triangles)
+  // A triangle whose plane cuts the light (`cuts`) is included, on either side, where its part
+  // toward the light lies wholly in front of the light (pixel_edges.h, classifyCutting), and
+  // adds `weight` on its positive side, -`weight` on its negative side; elsewhere it is not
+  // counted, so the pixel is kept unless the test below proves that. Its corners relative to
+  // the light centre c, v' = v - c, are in front of the light seen from a point p when
+  // v'.q + r |q| < 0 for q = c - p (the corner's depth along the axis below |q| - r); the
+  // pixel's PixelBlock::reach and ::slack widen that (cutInFront).
+  float ends[2][3];        // the edge's corners a', b'
+  float opposite[4][3];    // each triangle's third corner
+  float cut_extent[4];     // the largest |v'| of the triangle's corners plus r, rounded up
+  bool cuts[4];
+  bool any_cuts = false;  // one of cuts[0 .. triangle_count)
 };
 
 // Up to 64 pixels: screen position of the centre and stored depth; `active` has bit i set for
-// the pixels to test.
+// the pixels to test. For the cutting triangles' test, per pixel q = c - p0 from its
+// depth-buffer point p0, `reach` = r |q| + eps |q|^2 and `slack` = d + eps |q|, d the farthest
+// the shaded point lies from p0 (a move of p by d changes v'.q + r |q| by at most
+// d (|v'| + r)) and eps far above the float rounding of these values (exact_technique.cpp): a
+// corner is certainly in front where v'.q + reach + slack * (|v'| + r) < 0.
 struct alignas(64) PixelBlock {
   float sx[kBlockPixels], sy[kBlockPixels], z[kBlockPixels];
+  float qx[kBlockPixels], qy[kBlockPixels], qz[kBlockPixels];
+  float reach[kBlockPixels], slack[kBlockPixels];
+  bool has_q = false;  // false: q, reach and slack unset, every cutting triangle keeps the pixel
   uint64_t active = 0;
 };
 

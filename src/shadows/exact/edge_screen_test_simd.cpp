@@ -35,20 +35,47 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
                              hn::Mul(hn::Set(df, p[2]), z)),
                      hn::Set(df, p[3]));
     };
+    // Most pixels of a binned tile lie outside the edge's thin region: once every lane is out,
+    // the remaining planes cannot bring one back (the scalar twin stops per pixel the same way).
     auto keep = hn::FirstN(df, lanes);  // all true
-    for (int k = 0; k < t.region_count; ++k)
+    for (int k = 0; k < t.region_count; ++k) {
       keep = hn::And(keep, hn::Ge(planeAt(t.region[k]), hn::Set(df, -t.region_margin[k])));
+      if (hn::AllFalse(df, keep)) break;
+    }
+    if (hn::AllFalse(df, keep)) continue;
     if (t.triangle_count > 0) {
       auto unknown = hn::FirstN(df, 0);  // all false
       auto weight = hn::Zero(di);
+      // (v0 qx + v1 qy) + v2 qz, as the scalar twin.
+      auto depth = [&](const float* v) {
+        return hn::Add(hn::Add(hn::Mul(hn::Set(df, v[0]), hn::Load(df, block.qx + i)),
+                               hn::Mul(hn::Set(df, v[1]), hn::Load(df, block.qy + i))),
+                       hn::Mul(hn::Set(df, v[2]), hn::Load(df, block.qz + i)));
+      };
       for (int k = 0; k < t.triangle_count; ++k) {
         const auto e = planeAt(t.triangle[k]);
         const auto positive = hn::Gt(e, hn::Set(df, t.triangle_margin[k]));
         const auto negative = hn::Lt(e, hn::Set(df, -t.triangle_margin[k]));
         unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
-        const auto included = t.light_above[k] ? negative : positive;
-        weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),
-                                                    hn::Set(di, t.weight[k])));
+        if (t.cuts[k] && !block.has_q) {
+          unknown = hn::FirstN(df, lanes);  // all true: no proof without q
+        } else if (t.cuts[k]) {
+          const auto deepest =
+              hn::Max(hn::Max(depth(t.ends[0]), depth(t.ends[1])), depth(t.opposite[k]));
+          const auto in_front = hn::Lt(
+              hn::Add(hn::Add(deepest, hn::Load(df, block.reach + i)),
+                      hn::Mul(hn::Load(df, block.slack + i), hn::Set(df, t.cut_extent[k]))),
+              hn::Zero(df));
+          unknown = hn::Or(unknown, hn::Not(in_front));
+          weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, positive),
+                                                      hn::Set(di, t.weight[k])));
+          weight = hn::Sub(weight, hn::IfThenElseZero(hn::RebindMask(di, negative),
+                                                      hn::Set(di, t.weight[k])));
+        } else {
+          const auto included = t.light_above[k] ? negative : positive;
+          weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),
+                                                      hn::Set(di, t.weight[k])));
+        }
       }
       keep = hn::And(keep, hn::Or(unknown, hn::RebindMask(df, hn::Ne(weight, hn::Zero(di)))));
     }

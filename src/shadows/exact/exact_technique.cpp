@@ -77,7 +77,8 @@ struct TileWork {
 class ExactSoftShadows final : public PreparedTechnique {
  public:
   ExactSoftShadows(const ExactOptions& options, const Scene& scene)
-      : options_(options), scene_(scene), samples_(makeSampleSet(options.samples, options.seed)) {}
+      : options_(options), scene_(scene), bounds_(scene.bounds()),
+        samples_(makeSampleSet(options.samples, options.seed)) {}
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override;
@@ -89,6 +90,7 @@ class ExactSoftShadows final : public PreparedTechnique {
 
   ExactOptions options_;
   const Scene& scene_;
+  Bounds3 bounds_;  // of every visible point (binEdges)
   SampleSet samples_;
 };
 
@@ -192,7 +194,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   {
     PassTimer timer(stats, "binning");
     bins = binEdges(edges, light, view, eye.depth, options_.tile_level,
-                    kMaxOriginOffsetFootprints);
+                    kMaxOriginOffsetFootprints, bounds_);
     stats.tiles_tested += bins.tiles_tested;
     stats.tiles_culled += bins.tiles_culled;
   }
@@ -204,6 +206,9 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     const FacingAway away(scene_, light, view);
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
     const int tile = 1 << bins.level;
+    const dvec3 light_centre(light.center), eye_position(view.eye);
+    // A pixel footprint at unit distance, at the image centre (ray_origin.h).
+    const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
     std::vector<TileWork> tile_work(tiles);
     ProgressBar progress("exact", tiles, context.show_progress);
     parallelFor(tiles, [&](size_t index) {
@@ -217,6 +222,11 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
       const uint32_t* end = bins.edges.data() + bins.begin[index + 1];
       const int x0 = tx * tile, x1 = std::min(width, x0 + tile);
       const int y0 = ty * tile, y1 = std::min(height, y0 + tile);
+      // Whether an edge binned here has a triangle cutting the light: only then do the pixels
+      // need what the quick reject's test of it reads (PixelBlock::qx ...).
+      bool tile_cuts = false;
+      for (const uint32_t* it = begin; it != end && !tile_cuts; ++it)
+        tile_cuts = bins.tests[*it].any_cuts;
       // Blocks of up to 64 pixels, row after row of the tile.
       int x = x0, y = y0;
       while (y < y1) {
@@ -230,6 +240,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           block.sx[i] = float(x) + 0.5f;
           block.sy[i] = float(y) + 0.5f;
           block.z[i] = eye.depth.depth.at(x, y);
+          block.qx[i] = block.qy[i] = block.qz[i] = block.reach[i] = block.slack[i] = 0.0f;
           const uint32_t id = eye.primitive.at(x, y);
           if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
           ++work.reads;
@@ -249,6 +260,28 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         }
         for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
         if (block.active == 0) continue;
+        block.has_q = tile_cuts;
+        if (tile_cuts) {
+          // The cutting triangles' test (PixelBlock): q from the depth-buffer point, the
+          // shaded point within kMaxOriginOffsetFootprints footprints of it, and a relative
+          // eps of 1e-5 against the float rounding of q, the corners and the sums (some 1e-7
+          // of |v'| |q|) and classifyCutting's own margins (1e-9 |q|^2).
+          for (uint64_t active = block.active; active != 0; active &= active - 1) {
+            const int i = __builtin_ctzll(active);
+            const dvec3 p0 = view.unproject(scratch.px[i], scratch.py[i], block.z[i]);
+            const dvec3 q = light_centre - p0;
+            const double q_length = glm::length(q);
+            const double offset =
+                kMaxOriginOffsetFootprints * pixel_angle * glm::length(p0 - eye_position) * 1.01;
+            constexpr double kEps = 1e-5;
+            block.qx[i] = float(q.x);
+            block.qy[i] = float(q.y);
+            block.qz[i] = float(q.z);
+            block.reach[i] =
+                float((double(light.radius) + kEps * q_length) * q_length * (1.0 + 1e-6));
+            block.slack[i] = float((offset + kEps * q_length) * (1.0 + 1e-6));
+          }
+        }
         for (const uint32_t* it = begin; it != end; ++it) {
           work.tests += uint64_t(__builtin_popcountll(block.active));
           uint64_t candidates = edgeCandidates(bins.tests[*it], block, context.simd);
