@@ -78,6 +78,7 @@ class BinTile {
     for (const Cell& c : cells_) {
       if (!c.surface) continue;
       any_surface_ = true;
+      ++surface_cells_;
       zmin_ = std::min(zmin_, c.zmin);
       zmax_ = std::max(zmax_, c.zmax);
     }
@@ -85,6 +86,7 @@ class BinTile {
   // The depth range of the bin tile's surface pixels (without surface_ranges, z-min 0 where a
   // tile holds background): its box holds every cell's.
   bool anySurface() const { return any_surface_; }
+  int surfaceCells() const { return surface_cells_; }
   float zmin() const { return zmin_; }
   float zmax() const { return zmax_; }
   int perRow() const { return per_row_; }
@@ -103,6 +105,7 @@ class BinTile {
   TileBox box_;
   int level_, per_row_;
   bool any_surface_ = false;
+  int surface_cells_ = 0;
   float zmin_ = 1.0f, zmax_ = 0.0f;
   Cell cells_[kMaxCells];
 };
@@ -353,6 +356,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // found (a volume reaching only background here draws nothing); the triangles before it are
   // then drawn first (the stencil is a sum: the order does not matter).
   bool marked = false;
+  int unmarked = tile.surfaceCells();  // once 0, no rect can mark another
   const uint32_t* pending = first;  // triangles before it are drawn
   for (const uint32_t* k = first; k != last; ++k) {
     const SetupTriangle& t = set.triangles[*k];
@@ -360,12 +364,13 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
     int cx0, cy0, cx1, cy1;
     tile.cellRange(e, cx0, cy0, cx1, cy1);
-    for (int cy = cy0; cy <= cy1; ++cy)
+    for (int cy = cy0; cy <= cy1 && unmarked > 0; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx) {
         const int i = cy * n + cx;
         if (!tile.cell(cx, cy).surface || boundary[i]) continue;
         boundary[i] = 1;
         ++work.boundary;
+        --unmarked;
         marked = true;
       }
     if (!marked) continue;
