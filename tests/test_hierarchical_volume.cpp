@@ -60,6 +60,18 @@ void expectSameStencils(const Scene& scene, const View& view, VolumeMode mode,
                                                                             : "depth bounds")
                                  << ", dense limit " << options.dense_limit
                                  << ", tiles " << (1 << level);
+        // The same stencil resolved tile by tile inside the pass (what the techniques run):
+        // a difference means a bin tile was resolved from a stale or partial stencil, or the
+        // background / facing-away rule of resolveVisibility was not followed.
+        const FacingAway away(scene, scene.lights[l], view);
+        Image<float> expected_visibility, visibility;
+        resolveVisibility(scene, scene.lights[l], view, eye, expected_visibility,
+                          [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
+        Stats fused_stats;
+        tiledVolumeVisibility(volumes, eye, away, options, visibility, fused_stats);
+        EXPECT_TRUE(visibility == expected_visibility)
+            << what << ", light " << l << ", fused resolve, tiles " << (1 << level);
+        EXPECT_TRUE(fused_stats.sameCounters(stats)) << what << ", light " << l;
       }
   }
 }

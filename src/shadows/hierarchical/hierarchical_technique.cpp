@@ -28,20 +28,17 @@ class TiledVolumes final : public PreparedTechnique {
     TechniqueResult result;
     const ShadowVolumeSet volumes =
         buildShadowVolumes(scene_, light.center, view, eye, options_.mode, result.stats);
-    Image<int32_t> stencil;
-    {
-      PassTimer timer(result.stats, "volumes");
-      TiledVolumeStencilOptions stencil_options;
-      stencil_options.culling = culling_;
-      stencil_options.tile_level = options_.tile_level;
-      stencil_options.dense_limit =
-          culling_ == VolumeCulling::Hierarchical ? options_.dense_limit : 0;
-      stencil_options.simd = context.simd;
-      stencil = tiledVolumeStencil(volumes, eye.depth, stencil_options, result.stats);
-    }
-    PassTimer timer(result.stats, "resolve");
-    resolveVisibility(scene_, light, view, eye, result.visibility,
-                      [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
+    // The stencil resolved tile by tile inside the volume pass (tiledVolumeVisibility): there
+    // is no separate "resolve" pass.
+    PassTimer timer(result.stats, "volumes");
+    TiledVolumeStencilOptions stencil_options;
+    stencil_options.culling = culling_;
+    stencil_options.tile_level = options_.tile_level;
+    stencil_options.dense_limit =
+        culling_ == VolumeCulling::Hierarchical ? options_.dense_limit : 0;
+    stencil_options.simd = context.simd;
+    const FacingAway away(scene_, light, view);
+    tiledVolumeVisibility(volumes, eye, away, stencil_options, result.visibility, result.stats);
     return result;
   }
 

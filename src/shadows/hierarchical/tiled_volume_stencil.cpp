@@ -78,6 +78,7 @@ class BinTile {
     for (const Cell& c : cells_) {
       if (!c.surface) continue;
       any_surface_ = true;
+      ++surface_cells_;
       zmin_ = std::min(zmin_, c.zmin);
       zmax_ = std::max(zmax_, c.zmax);
     }
@@ -85,6 +86,7 @@ class BinTile {
   // The depth range of the bin tile's surface pixels (without surface_ranges, z-min 0 where a
   // tile holds background): its box holds every cell's.
   bool anySurface() const { return any_surface_; }
+  int surfaceCells() const { return surface_cells_; }
   float zmin() const { return zmin_; }
   float zmax() const { return zmax_; }
   int perRow() const { return per_row_; }
@@ -103,6 +105,7 @@ class BinTile {
   TileBox box_;
   int level_, per_row_;
   bool any_surface_ = false;
+  int surface_cells_ = 0;
   float zmin_ = 1.0f, zmax_ = 0.0f;
   Cell cells_[kMaxCells];
 };
@@ -197,44 +200,54 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   uint8_t touched[kMaxCells] = {}, boundary[kMaxCells] = {};
   int32_t sample[kMaxCells] = {};
   const TileBox& box = tile.box();
-  for (const uint32_t* k = first; k != last; ++k) {
+  // The triangles' rects set up here, with their class against the bin tile's box, kept for
+  // the tile walk and the drawing below (one buffer per thread).
+  struct Rect {
+    const SetupTriangle* t;
+    TileEdges e;
+    TileBoxClass whole;
+  };
+  thread_local std::vector<Rect> rects;
+  rects.clear();
+  // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes where
+  // the quad is counted (Front): such a tile is decided per pixel.
+  auto silhouetteMeets = [&](const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+    return !zfail && t.owners[0] != ClipTriangles::kNoOwner &&
+           segmentMeetsTile(set.silhouettes[t.owners[0]], x0, y0, x1, y1);
+  };
+  // Each triangle first against the box of its whole rect's pixels and the bin tile's surface
+  // range: each smaller tile's box lies inside it, so an answer other than Crossing holds for
+  // every tile of the rect (which is then classified without a test of its own: the sample
+  // decides). A rect of one tile skips it (its tile's own test follows at once).
+  for (const uint32_t* k = first; k != last && !per_pixel_only; ++k) {
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
+    // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-    const int32_t contribution = drawn(t).contribution;
-    // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes
-    // where the quad is counted (Front): such a tile is decided per pixel.
-    const ScreenSegment* silhouette =
-        !zfail && t.owners[0] != ClipTriangles::kNoOwner ? &set.silhouettes[t.owners[0]] : nullptr;
-    auto silhouetteMeets = [&](int x0, int y0, int x1, int y1) {
-      return silhouette && segmentMeetsTile(*silhouette, x0, y0, x1, y1);
-    };
+    TileBoxClass whole = TileBoxClass::Crossing;
     int cx0, cy0, cx1, cy1;
     tile.cellRange(e, cx0, cy0, cx1, cy1);
-    // The triangle against the box of the whole rect's pixels and the bin tile's surface range
-    // first: each cell's box lies inside it, so an answer other than Crossing holds for every
-    // cell (and a cell is then classified without a test of its own: the sample decides).
-    TileBoxClass whole = TileBoxClass::Crossing;
-    if (!per_pixel_only && (cx0 != cx1 || cy0 != cy1)) {
+    if (cx0 != cx1 || cy0 != cy1) {
       ++work.tally.tested;
       whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
-      if (whole == TileBoxClass::Outside) {
-        ++work.tally.culled;
-        continue;
-      }
-      if (whole == TileBoxClass::Front && silhouetteMeets(e.x0, e.y0, e.x1, e.y1))
+      if (whole == TileBoxClass::Front && silhouetteMeets(t, e.x0, e.y0, e.x1, e.y1))
         whole = TileBoxClass::Crossing;  // decide tile by tile
     }
+    if (whole == TileBoxClass::Outside) ++work.tally.culled;
+    rects.push_back({&t, e, whole});
+  }
+  for (const Rect& r : rects) {
+    const SetupTriangle& t = *r.t;
+    if (r.whole == TileBoxClass::Outside) continue;
+    const int32_t contribution = drawn(t).contribution;
+    int cx0, cy0, cx1, cy1;
+    tile.cellRange(r.e, cx0, cy0, cx1, cy1);
     for (int cy = cy0; cy <= cy1; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx) {
         const int i = cy * n + cx;
         const Cell& c = tile.cell(cx, cy);
         if (!c.surface || boundary[i]) continue;
-        if (per_pixel_only) {
-          touched[i] = boundary[i] = 1;
-          continue;
-        }
-        TileBoxClass cls = whole;
+        TileBoxClass cls = r.whole;
         if (cls == TileBoxClass::Crossing) {
           ++work.tally.tested;
           cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
@@ -245,15 +258,15 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         }
         touched[i] = 1;
         if (cls == TileBoxClass::Crossing ||
-            (cls == TileBoxClass::Front && silhouetteMeets(c.x0, c.y0, c.x1, c.y1))) {
+            (cls == TileBoxClass::Front && silhouetteMeets(t, c.x0, c.y0, c.x1, c.y1))) {
           boundary[i] = 1;
         } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
           sample[i] += contribution;
         }
       }
   }
-  bool any_boundary = false, any_decided = false;
-  for (int i = 0; i < n * n; ++i) {
+  bool any_boundary = per_pixel_only, any_decided = false;
+  for (int i = 0; i < n * n && !per_pixel_only; ++i) {
     if (!touched[i]) continue;
     any_decided |= !boundary[i];
     if (boundary[i]) {
@@ -279,17 +292,29 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // With every tile the volume reaches a boundary tile, its triangles are drawn over their
   // whole rects, tested per bin tile as the per-pixel passes do: outside the touched tiles
   // they cover no pixel with a surface (classifyTileBox found them Outside there).
-  const int level = any_decided ? tile.level() : kBinTileLevel;
-  for (const uint32_t* k = first; k != last; ++k) {
-    const SetupTriangle& t = set.triangles[*k];
-    TileEdges e;
-    // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
-    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+  auto draw = [&](const SetupTriangle& t, TileEdges& e) {
+    // A triangle whose rect reaches no decided tile is drawn over its whole rect, tested per
+    // bin tile as the per-pixel passes do (one depth-rule test and one kernel call instead of
+    // one per tile); outside the boundary tiles it covers no pixel with a surface
+    // (classifyTileBox found it Outside there, or the tile holds only background). Otherwise
+    // tile by tile, skipping the decided ones.
+    int level = kBinTileLevel;
+    if (any_decided) {
+      int cx0, cy0, cx1, cy1;
+      tile.cellRange(e, cx0, cy0, cx1, cy1);
+      for (int cy = cy0; cy <= cy1 && level == kBinTileLevel; ++cy)
+        for (int cx = cx0; cx <= cx1; ++cx)
+          if (touched[cy * n + cx] && !boundary[cy * n + cx]) {
+            level = tile.level();
+            break;
+          }
+    }
+    const bool skip_decided = level != kBinTileLevel;
     const Drawn d = drawn(t);
     forEachCullRect(
         t, e, depth, level,
         [&](const TileEdges& sub, float zmin, float zmax) {
-          if (any_decided) {
+          if (skip_decided) {
             int cx0, cy0, cx1, cy1;
             tile.cellRange(sub, cx0, cy0, cx1, cy1);
             bool any = false;
@@ -321,6 +346,41 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
             }
         },
         work.tally, kWhole);
+  };
+  if (!per_pixel_only) {
+    for (Rect& r : rects) draw(*r.t, r.e);
+    return;
+  }
+  // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach, marked
+  // in the same walk as the drawing. As with classification, nothing is drawn until one is
+  // found (a volume reaching only background here draws nothing); the triangles before it are
+  // then drawn first (the stencil is a sum: the order does not matter).
+  bool marked = false;
+  int unmarked = tile.surfaceCells();  // once 0, no rect can mark another
+  const uint32_t* pending = first;  // triangles before it are drawn
+  for (const uint32_t* k = first; k != last; ++k) {
+    const SetupTriangle& t = set.triangles[*k];
+    TileEdges e;
+    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    int cx0, cy0, cx1, cy1;
+    tile.cellRange(e, cx0, cy0, cx1, cy1);
+    for (int cy = cy0; cy <= cy1 && unmarked > 0; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        const int i = cy * n + cx;
+        if (!tile.cell(cx, cy).surface || boundary[i]) continue;
+        boundary[i] = 1;
+        ++work.boundary;
+        --unmarked;
+        marked = true;
+      }
+    if (!marked) continue;
+    for (; pending != k; ++pending) {
+      const SetupTriangle& p = set.triangles[*pending];
+      TileEdges pe;
+      if (setupTileRect(p, box.x0, box.y0, box.x1, box.y1, pe)) draw(p, pe);
+    }
+    pending = k + 1;
+    draw(t, e);
   }
 }
 
@@ -330,62 +390,61 @@ TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
   return {x0, y0, std::min(width, x0 + kBinTileSize) - 1, std::min(height, y0 + kBinTileSize) - 1};
 }
 
-}  // namespace
-
-Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer& depth,
-                                  const TiledVolumeStencilOptions& options, Stats& stats) {
-  PENUMBRA_CHECK(options.tile_level >= 2 && options.tile_level <= kBinTileLevel,
-                 "tile level {} is outside 2..{}", options.tile_level, kBinTileLevel);
-  const int width = depth.width(), height = depth.height();
-  Image<int32_t> stencil(width, height, 0);
-  const TileBins bins = binTriangles(set.triangles, width, height);
-  std::vector<TileWork> work(bins.tileCount());
-  parallelFor(bins.tileCount(), [&](size_t index) {
-    const uint32_t* first = bins.triangles.data() + bins.offsets[index];
-    const uint32_t* last = bins.triangles.data() + bins.offsets[index + 1];
-    if (first == last) return;
-    TileWork& w = work[index];
-    const TileBox box = binTileBox(bins, index, width, height);
-    TileCopy<float> tile_depth(depth.depth, box);
-    TileCopy<int32_t> tile_stencil(0);
-    StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};
-    target.x0 = box.x0;
-    target.y0 = box.y0;
-    const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
-    // The surface ranges of tiles with background are only needed (and read) by Hierarchical.
-    const BinTile tile(box, depth, options.tile_level, tile_depth.data(), hierarchical, w);
-    if (!tile.anySurface()) return;  // only background: the stencil stays 0
-    int32_t coarse[kMaxCells] = {};
-    // The bin's triangles are in increasing order, so each volume's are one run.
-    size_t v = 0;
-    while (first != last) {
-      while (*first >= set.begin[v + 1]) ++v;
-      const uint32_t* end = first;
-      while (end != last && *end < set.begin[v + 1]) ++end;
-      if (hierarchical)
-        drawHierarchical(set, v, first, end, tile, depth, target, options, coarse, w);
-      else
-        drawDepthBounded(set, v, first, end, tile, depth, target, options.simd, w);
-      first = end;
-    }
-    if (hierarchical) {
-      const int n = tile.perRow();
-      for (int cy = 0; cy < n; ++cy)
-        for (int cx = 0; cx < n; ++cx) {
-          const int32_t sum = coarse[cy * n + cx];
-          if (sum == 0) continue;
-          const Cell& c = tile.cell(cx, cy);
-          for (int y = c.y0; y <= c.y1; ++y)
-            for (int x = c.x0; x <= c.x1; ++x) {
-              const size_t i = size_t(y - box.y0) * kBinTileSize + size_t(x - box.x0);
-              if (tile_depth.data()[i] <= 0.0f) continue;  // background keeps 0
-              tile_stencil.data()[i] += sum;
-              ++w.writes;
-            }
+// Draws bin tile `index`'s volumes into `tile_stencil` (a zeroed bin-tile copy, kBinTileSize
+// pixels per row) over `tile_depth` (the tile's depths, copied); false when it drew nothing (no
+// triangle, or only background), the stencil then all 0.
+bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
+                 const TiledVolumeStencilOptions& options, const TileBins& bins, size_t index,
+                 const TileBox& box, float* tile_depth, int32_t* tile_stencil, TileWork& w) {
+  const uint32_t* first = bins.triangles.data() + bins.offsets[index];
+  const uint32_t* last = bins.triangles.data() + bins.offsets[index + 1];
+  if (first == last) return false;
+  StencilTarget target{tile_depth, tile_stencil, kBinTileSize};
+  target.x0 = box.x0;
+  target.y0 = box.y0;
+  const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
+  // The surface ranges of tiles with background are only needed (and read) by Hierarchical.
+  const BinTile tile(box, depth, options.tile_level, tile_depth, hierarchical, w);
+  if (!tile.anySurface()) return false;  // only background: the stencil stays 0
+  int32_t coarse[kMaxCells] = {};
+  // The bin's triangles are in increasing order, so each volume's are one run.
+  size_t v = 0;
+  while (first != last) {
+    while (*first >= set.begin[v + 1]) ++v;
+    const uint32_t* end = first;
+    while (end != last && *end < set.begin[v + 1]) ++end;
+    if (hierarchical)
+      drawHierarchical(set, v, first, end, tile, depth, target, options, coarse, w);
+    else
+      drawDepthBounded(set, v, first, end, tile, depth, target, options.simd, w);
+    first = end;
+  }
+  if (!hierarchical) return true;
+  // The per-tile counts added to their surface pixels (background keeps 0), branch-free so that
+  // the row vectorizes; each surface pixel a non-zero count reaches is one stencil write.
+  const int n = tile.perRow();
+  for (int cy = 0; cy < n; ++cy)
+    for (int cx = 0; cx < n; ++cx) {
+      const int32_t sum = coarse[cy * n + cx];
+      if (sum == 0) continue;
+      const Cell& c = tile.cell(cx, cy);
+      uint64_t writes = 0;
+      for (int y = c.y0; y <= c.y1; ++y) {
+        const size_t row = size_t(y - box.y0) * kBinTileSize;
+        const float* d = tile_depth + row;
+        int32_t* s = tile_stencil + row;
+        for (int i = c.x0 - box.x0; i <= c.x1 - box.x0; ++i) {
+          const int32_t surface = d[i] <= 0.0f ? 0 : 1;
+          s[i] += sum * surface;
+          writes += uint64_t(surface);
         }
+      }
+      w.writes += writes;
     }
-    tile_stencil.storeTo(stencil, box);
-  });
+  return true;
+}
+
+void addCounters(const std::vector<TileWork>& work, Stats& stats) {
   for (const TileWork& w : work) {
     stats.pixels_rasterized += w.kernel.covered;
     stats.z_reads += w.kernel.covered + w.z_reads;
@@ -397,7 +456,72 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
     stats.tiles_boundary += w.boundary;
     stats.tiles_accepted += w.accepted;
   }
+}
+
+void checkLevel(const TiledVolumeStencilOptions& options) {
+  PENUMBRA_CHECK(options.tile_level >= 2 && options.tile_level <= kBinTileLevel,
+                 "tile level {} is outside 2..{}", options.tile_level, kBinTileLevel);
+}
+
+}  // namespace
+
+Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer& depth,
+                                  const TiledVolumeStencilOptions& options, Stats& stats) {
+  checkLevel(options);
+  const int width = depth.width(), height = depth.height();
+  Image<int32_t> stencil(width, height, 0);
+  const TileBins bins = binTriangles(set.triangles, width, height);
+  std::vector<TileWork> work(bins.tileCount());
+  parallelFor(bins.tileCount(), [&](size_t index) {
+    if (bins.offsets[index] == bins.offsets[index + 1]) return;
+    const TileBox box = binTileBox(bins, index, width, height);
+    TileCopy<float> tile_depth(depth.depth, box);
+    TileCopy<int32_t> tile_stencil(0);
+    if (drawBinTile(set, depth, options, bins, index, box, tile_depth.data(), tile_stencil.data(),
+                    work[index]))
+      tile_stencil.storeTo(stencil, box);
+  });
+  addCounters(work, stats);
   return stencil;
+}
+
+void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
+                           const FacingAway& away, const TiledVolumeStencilOptions& options,
+                           Image<float>& visibility, Stats& stats) {
+  checkLevel(options);
+  const DepthBuffer& depth = eye.depth;
+  const int width = depth.width(), height = depth.height();
+  PENUMBRA_CHECK(eye.primitive.width() == width && eye.primitive.height() == height,
+                 "primitive ids {}x{} do not match depth {}x{}", eye.primitive.width(),
+                 eye.primitive.height(), width, height);
+  visibility.resizeForOverwrite(width, height);
+  const TileBins bins = binTriangles(set.triangles, width, height);
+  std::vector<TileWork> work(bins.tileCount());
+  parallelFor(bins.tileCount(), [&](size_t index) {
+    const TileBox box = binTileBox(bins, index, width, height);
+    bool drawn = false;
+    alignas(64) int32_t tile_stencil[kBinTileSize * kBinTileSize];
+    if (bins.offsets[index] != bins.offsets[index + 1]) {
+      TileCopy<float> tile_depth(depth.depth, box);
+      std::fill_n(tile_stencil, kBinTileSize * kBinTileSize, 0);
+      drawn = drawBinTile(set, depth, options, bins, index, box, tile_depth.data(), tile_stencil,
+                          work[index]);
+    }
+    // resolveVisibility's rule (facing_away.h), pixel by pixel: 1 on the background, 0 where
+    // the visible triangle faces away from the light, else lit where the stencil is 0.
+    for (int y = box.y0; y <= box.y1; ++y) {
+      const uint32_t* ids = eye.primitive.row(y);
+      float* out = visibility.row(y);
+      const int32_t* s = tile_stencil + size_t(y - box.y0) * kBinTileSize;
+      for (int x = box.x0; x <= box.x1; ++x) {
+        const uint32_t id = ids[x];
+        out[x] = id == kNoPrimitive
+                     ? 1.0f
+                     : (away(id) || (drawn && s[x - box.x0] != 0) ? 0.0f : 1.0f);
+      }
+    }
+  });
+  addCounters(work, stats);
 }
 
 }  // namespace penumbra

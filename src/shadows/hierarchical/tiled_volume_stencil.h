@@ -21,6 +21,7 @@
 #include "core/image.h"
 #include "core/stats.h"
 #include "raster/depth_buffer.h"
+#include "shadows/facing_away.h"
 #include "shadows/hierarchical/volume_set.h"
 
 namespace penumbra {
@@ -46,5 +47,13 @@ struct TiledVolumeStencilOptions {
 // and tiles_boundary. Background pixels keep stencil 0, as in the per-pixel passes.
 Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& volumes, const DepthBuffer& depth,
                                   const TiledVolumeStencilOptions& options, Stats& stats);
+
+// The same stencil, resolved into `visibility` bin tile by bin tile as resolveVisibility
+// (facing_away.h) resolves it (1 on the background, 0 where the visible triangle faces away
+// from the light or the stencil is non-zero, else 1) while the tile is still in the cache: no
+// frame-sized stencil is cleared, stored and read back. The same counters.
+void tiledVolumeVisibility(const ShadowVolumeSet& volumes, const EyeBuffers& eye,
+                           const FacingAway& away, const TiledVolumeStencilOptions& options,
+                           Image<float>& visibility, Stats& stats);
 
 }  // namespace penumbra

@@ -30,8 +30,14 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
                                    const EyeBuffers& eye, VolumeMode mode, Stats& stats) {
   PassTimer timer(stats, "silhouette");
   ShadowVolumeSet set;
-  set.begin.push_back(0);
-  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+  // Every mesh's polygons in one list, set up in one parallel pass (as the per-pixel stencil
+  // does), each tagged with its volume in owners[1]; the volumes' ranges are then read off the
+  // set-up triangles, which keep the input order.
+  ClipTriangles polygons(eye.clip_vertices);
+  const size_t meshes = scene.meshes.size();
+  set.zfail.resize(meshes);
+  set.may_contain_eye.resize(meshes);
+  for (size_t m = 0; m < meshes; ++m) {
     const Mesh& mesh = scene.meshes[m];
     CasterVolume volume =
         casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto);
@@ -39,10 +45,10 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
     // The same polygons, in the same order and vertex order, as the per-pixel stencil's
     // (shadow_stencil.cpp), so every pixel a volume polygon reaches gets bit-identical edge
     // and depth values.
-    ClipTriangles polygons(eye.clip_vertices);
     appendExtrudedVertices(mesh, centre, view, volume, polygons);
     const uint32_t finite = volume.finite, infinite = volume.infinite;
     const uint8_t flags = volume.zfail ? kZFail : 0;
+    const uint32_t tag = uint32_t(m);
     for (const SilhouetteEdge& e : volume.silhouette.edges) {
       uint32_t segment = ClipTriangles::kNoOwner;
       if (!volume.zfail) {
@@ -51,28 +57,30 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
                                                 eye.clip_vertices[finite + e.v0], view));
       }
       polygons.addOwned(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags,
-                        segment, ClipTriangles::kNoOwner);
-      polygons.add(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags);
+                        segment, tag);
+      polygons.addOwned(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags,
+                        ClipTriangles::kNoOwner, tag);
     }
     // z-pass: caps are never in front of a visible point (volume_technique.cpp).
     if (volume.zfail)
       forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
-        polygons.add(a, b, c, weight, flags);
+        polygons.addOwned(a, b, c, weight, flags, ClipTriangles::kNoOwner, tag);
       });
-    std::vector<SetupTriangle> setup = setupTriangles(polygons, view.width, view.height);
-    stats.triangles += setup.size();
-    float lo = 1.0f, hi = 0.0f;
-    for (const SetupTriangle& t : setup) {
-      lo = std::min(lo, t.depth_min);
-      hi = std::max(hi, t.depth_max);
-    }
-    set.triangles.insert(set.triangles.end(), setup.begin(), setup.end());
-    set.begin.push_back(uint32_t(set.triangles.size()));
-    set.zfail.push_back(volume.zfail);
-    set.may_contain_eye.push_back(mayContainNearPlane(view, centre, mesh.bounds()));
-    set.depth_min.push_back(lo);
-    set.depth_max.push_back(hi);
+    set.zfail[m] = volume.zfail;
+    set.may_contain_eye[m] = mayContainNearPlane(view, centre, mesh.bounds());
   }
+  set.triangles = setupTriangles(polygons, view.width, view.height);
+  stats.triangles += set.triangles.size();
+  set.begin.assign(meshes + 1, 0);
+  set.depth_min.assign(meshes, 1.0f);
+  set.depth_max.assign(meshes, 0.0f);
+  for (const SetupTriangle& t : set.triangles) {
+    const uint32_t v = t.owners[1];
+    ++set.begin[v + 1];
+    set.depth_min[v] = std::min(set.depth_min[v], t.depth_min);
+    set.depth_max[v] = std::max(set.depth_max[v], t.depth_max);
+  }
+  for (size_t m = 0; m < meshes; ++m) set.begin[m + 1] += set.begin[m];
   return set;
 }
 

@@ -28,8 +28,8 @@ struct ShadowVolumeSet {
   // Every volume's triangles, volume after volume, each volume's in the order the per-pixel
   // stencil draws them: side quads of its silhouette edges, then with z-fail its caps. In a
   // z-pass volume, the quad triangle holding the silhouette edge (its first) has owners[0] set
-  // to the edge's index in `silhouettes` (the owners are not used otherwise here; fan pieces of
-  // a clipped triangle keep them).
+  // to the edge's index in `silhouettes`, and every triangle's owners[1] is its volume (the
+  // owners are not used otherwise here; fan pieces of a clipped triangle keep them).
   std::vector<SetupTriangle> triangles;
   // Volume v owns triangles [begin[v], begin[v + 1]).
   std::vector<uint32_t> begin;
