@@ -12,6 +12,19 @@ namespace penumbra {
 
 namespace {
 
+// The normalised-device x, y extent of clip-space points (all in front of the near plane).
+struct NdcBox {
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  void extend(const dvec4& clip) {
+    const double x = clip.x / clip.w, y = clip.y / clip.w;
+    x0 = std::min(x0, x);
+    x1 = std::max(x1, x);
+    y0 = std::min(y0, y);
+    y1 = std::max(y1, y);
+  }
+  bool empty() const { return x0 > x1; }
+};
+
 constexpr size_t kChunk = 2048;  // items per work item
 
 // A world plane as a function of screen position and reversed-Z depth, E = value / w
@@ -225,14 +238,8 @@ class RegionBuilder {
       }
       full = positive != direction_count && negative != direction_count;
     }
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    auto extend = [&](const dvec4& clip) {
-      const double x = clip.x / clip.w, y = clip.y / clip.w;
-      x0 = std::min(x0, x);
-      x1 = std::max(x1, x);
-      y0 = std::min(y0, y);
-      y1 = std::max(y1, y);
-    };
+    NdcBox box;
+    auto extend = [&](const dvec4& clip) { box.extend(clip); };
     auto crossing = [&](const dvec4& from, const dvec4& step) {
       // from + t step at w = near, for t >= 0 (t <= 1 for a segment, checked by the caller).
       const double t = (near_ - from.w) / step.w;
@@ -253,7 +260,7 @@ class RegionBuilder {
       }
       if (positive == direction_count)
         for (int j = 0; j < direction_count; ++j) extend(directions[size_t(j)]);
-      if (x0 > x1) return;  // nothing in front of the eye
+      if (box.empty()) return;  // nothing in front of the eye
     }
     if (full) {
       const int tile = 1 << level_;
@@ -262,7 +269,7 @@ class RegionBuilder {
       region.ty1 = (height_ + tile - 1) / tile - 1;
       return;
     }
-    tileBox(region, x0, x1, y0, y1);
+    tileBox(region, box);
   }
 
   // The hull of the corners and their cones (4 directions each) cut by a slab: with a unit
@@ -319,14 +326,8 @@ class RegionBuilder {
         hull[size_t(count++)] =
             points[k] + (gap / glm::dot(w, world_directions[j])) * directions[j];
     }
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    auto extend = [&](const dvec4& clip) {
-      const double x = clip.x / clip.w, y = clip.y / clip.w;
-      x0 = std::min(x0, x);
-      x1 = std::max(x1, x);
-      y0 = std::min(y0, y);
-      y1 = std::max(y1, y);
-    };
+    NdcBox box;
+    auto extend = [&](const dvec4& clip) { box.extend(clip); };
     // The hull cut at w = near: the points in front and the crossings of the segments
     // between a point in front and one behind.
     bool behind = false;
@@ -344,12 +345,13 @@ class RegionBuilder {
         }
       }
     }
-    if (x0 <= x1) tileBox(region, x0, x1, y0, y1);  // else nothing in front of the eye
+    if (!box.empty()) tileBox(region, box);  // else nothing in front of the eye
     return true;
   }
 
   // The tiles of an NDC box.
-  void tileBox(Region& region, double x0, double x1, double y0, double y1) const {
+  void tileBox(Region& region, const NdcBox& box) const {
+    const double x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
     const int tile = 1 << level_;
     const int columns = (width_ + tile - 1) / tile, rows = (height_ + tile - 1) / tile;
     // NDC to pixels (y down), one pixel of slack, clamped before the conversion to int.
