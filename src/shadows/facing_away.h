@@ -53,9 +53,15 @@ class FacingAway {
   mutable std::vector<std::atomic<uint8_t>> known_;  // value-initialized: kUnknown
 };
 
-// Writes every pixel of `visibility` (sized like the eye buffers): 1 for the background, 0
-// where the visible triangle faces away from the light, else pixel(x, y), the technique's own
-// answer. One pass over the buffers, rows in parallel.
+// The rule every resolved pixel follows: 1 for the background, 0 where the visible triangle
+// `id` faces away from the light, else `value`, the technique's own answer (read only then).
+template <class PixelValue>
+inline float resolvedPixel(const FacingAway& away, uint32_t id, PixelValue&& value) {
+  return id == kNoPrimitive ? 1.0f : (away(id) ? 0.0f : value());
+}
+
+// Writes every pixel of `visibility` (sized like the eye buffers) by resolvedPixel with
+// pixel(x, y). One pass over the buffers, rows in parallel.
 template <class PixelVisibility>
 void resolveVisibility(const Scene& scene, const Light& light, const View& view,
                        const EyeBuffers& eye, Image<float>& visibility, PixelVisibility&& pixel) {
@@ -67,8 +73,7 @@ void resolveVisibility(const Scene& scene, const Light& light, const View& view,
     const uint32_t* ids = eye.primitive.row(y);
     float* out = visibility.row(y);
     for (int x = 0; x < width; ++x) {
-      const uint32_t id = ids[x];
-      out[x] = id == kNoPrimitive ? 1.0f : (away(id) ? 0.0f : pixel(x, y));
+      out[x] = resolvedPixel(away, ids[x], [&] { return pixel(x, y); });
     }
   });
 }

@@ -84,9 +84,10 @@ CoverageEdges silhouetteEdgesFromCentre(const Scene& scene, const Light& light,
   return out;
 }
 
-// One coverage pass's visibility: the area share, and per channel for a textured light.
+// One coverage pass's visibility: the area share, or per channel for a textured light (the
+// texture-weighted share, which for a uniform texture is the area share).
 struct CoverageImages {
-  Image<float> grey;
+  Image<float> grey;      // empty for a textured light
   ChannelVisibility rgb;  // empty for an untextured light
 };
 
@@ -134,7 +135,6 @@ struct Scratch {
   dvec3 own_rgb[kBlockPixels];
   bool flip[kBlockPixels];
   PairBatch batch;
-  std::vector<dvec3> a, b;  // an edge's end points in each pixel's frame (double, rectangle)
 };
 
 class CoverageShadows final : public PreparedTechnique {
@@ -213,11 +213,11 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
       stats.tiles_culled += bins.tiles_culled;
     }
     CoverageImages images;
-    images.grey.resize(width, height, 1.0f);
     if (textured) {
       for (Image<float>& c : images.rgb) c.resize(width, height, 1.0f);
+    } else {
+      images.grey.resize(width, height, 1.0f);
     }
-    Image<float>& soft = images.grey;
     {
       PassTimer timer(stats, "coverage");
       const FacingAway away(scene_, light, view);
@@ -247,9 +247,11 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             block.sy[i] = float(y) + 0.5f;
             block.z[i] = eye.depth.depth.at(x, y);
             const int32_t count = stencil.at(x, y);
-            soft.at(x, y) = count == 0 ? 1.0f : 0.0f;
+            const float hard_visibility = count == 0 ? 1.0f : 0.0f;
             if (textured) {
-              for (Image<float>& c : images.rgb) c.at(x, y) = count == 0 ? 1.0f : 0.0f;
+              for (Image<float>& c : images.rgb) c.at(x, y) = hard_visibility;
+            } else {
+              images.grey.at(x, y) = hard_visibility;
             }
             s.hard[i] = 1.0f - float(count);
             const uint32_t id = eye.primitive.at(x, y);
@@ -314,8 +316,9 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
           b.fraction.resize(n);
           const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(),      b.x1.data(),
                                         b.y1.data(), b.w1.data(), b.fraction.data()};
-          if (n == 0) {
-            // no pair: the hard value (and the own plane) stand
+          if (n == 0 || textured) {
+            // no pair: the hard value (and the own plane) stand; a textured light's terms are
+            // its own (below)
           } else if (table != nullptr) {
             // The table lookups: scalar, in double, the same in both modes.
             for (size_t k = 0; k < n; ++k) {
@@ -337,6 +340,19 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
           // In pair order: the sums do not depend on threads or SIMD.
           for (size_t k = 0; k < n; ++k) {
             const int i = b.pixel[k];
+            if (textured) {
+              // Per channel, exact (textured_coverage.h), from the same float end points and
+              // cut by the own plane as below.
+              dvec2 lo, hi;
+              if (clipToOutline(LightOutline::Square, dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)) {
+                const dvec3 fraction = texture->beyondFraction(
+                    lo, hi, s.flip[i], s.own_plane[i] < 1.0f, s.plane_slope[i], s.plane_offset[i]);
+                if (fraction != dvec3(0.0)) ++work.inside;
+                s.sum_rgb[i] += double(b.weight[k]) * fraction;
+              }
+              continue;
+            }
             float fraction = b.fraction[k];
             if (cut_terms && s.own_plane[i] < 1.0f) {
               dvec2 lo, hi;
@@ -349,32 +365,24 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             }
             if (fraction != 0.0f) ++work.inside;
             s.sum[i] += float(b.weight[k]) * fraction;
-            if (textured) {
-              // Per channel, exact (textured_coverage.h), from the same float end points.
-              dvec2 lo, hi;
-              if (clipToOutline(LightOutline::Square, dvec3(b.x0[k], b.y0[k], b.w0[k]),
-                                dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)) {
-                const bool cut = s.own_plane[i] < 1.0f;
-                s.sum_rgb[i] += double(b.weight[k]) *
-                                texture->beyondFraction(lo, hi, s.flip[i], cut, s.plane_slope[i],
-                                                        s.plane_offset[i]);
-              }
-            }
           }
           for (uint64_t active = framed_ok; active != 0; active &= active - 1) {
             const int i = __builtin_ctzll(active);
             if (!s.framed[i]) continue;
-            float& v = soft.at(s.px[i], s.py[i]);
             const float f = s.own_plane[i];
-            v = cut_terms && f < 1.0f ? std::clamp(f * s.hard[i] + s.sum[i], 0.0f, f)
-                                      : std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), f);
-            if (!textured) continue;
-            for (int c = 0; c < 3; ++c) {
-              const float fc = float(s.own_rgb[i][c]), sum = float(s.sum_rgb[i][c]);
-              images.rgb[size_t(c)].at(s.px[i], s.py[i]) =
-                  f < 1.0f ? std::clamp(fc * s.hard[i] + sum, 0.0f, fc)
-                           : std::clamp(s.hard[i] + sum, 0.0f, 1.0f);
+            if (textured) {
+              for (int c = 0; c < 3; ++c) {
+                const float fc = float(s.own_rgb[i][c]), sum = float(s.sum_rgb[i][c]);
+                images.rgb[size_t(c)].at(s.px[i], s.py[i]) =
+                    f < 1.0f ? std::clamp(fc * s.hard[i] + sum, 0.0f, fc)
+                             : std::clamp(s.hard[i] + sum, 0.0f, 1.0f);
+              }
+              continue;
             }
+            images.grey.at(s.px[i], s.py[i]) =
+                cut_terms && f < 1.0f
+                    ? std::clamp(f * s.hard[i] + s.sum[i], 0.0f, f)
+                    : std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), f);
           }
         }
       });
@@ -396,13 +404,13 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   if (!other_facing.empty()) {
     const CoverageImages other =
         coveragePass(CasterPolicy::SolidWithHolesOtherFacing, &other_facing);
-    for (size_t i = 0; i < soft.grey.size(); ++i) soft.grey[i] = std::min(soft.grey[i], other.grey[i]);
-    if (textured) {
-      for (int c = 0; c < 3; ++c) {
-        Image<float>& mine = soft.rgb[size_t(c)];
-        for (size_t i = 0; i < mine.size(); ++i) mine[i] = std::min(mine[i], other.rgb[size_t(c)][i]);
-      }
-    }
+    // Per channel for a textured light (the grey image is then empty, and the rgb ones are
+    // otherwise): each image keeps the darker of the two passes.
+    const auto darker = [](Image<float>& mine, const Image<float>& theirs) {
+      for (size_t i = 0; i < mine.size(); ++i) mine[i] = std::min(mine[i], theirs[i]);
+    };
+    darker(soft.grey, other.grey);
+    for (int c = 0; c < 3; ++c) darker(soft.rgb[size_t(c)], other.rgb[size_t(c)]);
   }
   {
     PassTimer timer(stats, "resolve");

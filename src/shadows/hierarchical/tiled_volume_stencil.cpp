@@ -507,17 +507,15 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
       drawn = drawBinTile(set, depth, options, bins, index, box, tile_depth.data(), tile_stencil,
                           work[index]);
     }
-    // resolveVisibility's rule (facing_away.h), pixel by pixel: 1 on the background, 0 where
-    // the visible triangle faces away from the light, else lit where the stencil is 0.
+    // resolveVisibility's rule (facing_away.h), pixel by pixel: lit where the stencil is 0.
     for (int y = box.y0; y <= box.y1; ++y) {
       const uint32_t* ids = eye.primitive.row(y);
       float* out = visibility.row(y);
       const int32_t* s = tile_stencil + size_t(y - box.y0) * kBinTileSize;
       for (int x = box.x0; x <= box.x1; ++x) {
-        const uint32_t id = ids[x];
-        out[x] = id == kNoPrimitive
-                     ? 1.0f
-                     : (away(id) || (drawn && s[x - box.x0] != 0) ? 0.0f : 1.0f);
+        out[x] = resolvedPixel(away, ids[x], [&] {
+          return drawn && s[x - box.x0] != 0 ? 0.0f : 1.0f;
+        });
       }
     }
   });
