@@ -222,18 +222,16 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
       PassTimer timer(stats, "coverage");
       const FacingAway away(scene_, light, view);
       const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
-      const int tile = 1 << bins.level;
       std::vector<TileWork> tile_work(tiles);
       parallelFor(tiles, [&](size_t index) {
         thread_local std::unique_ptr<Scratch> scratch_slot;
         if (!scratch_slot) scratch_slot = std::make_unique<Scratch>();
         Scratch& s = *scratch_slot;
         TileWork& work = tile_work[index];
-        const int tx = int(index % size_t(bins.columns)), ty = int(index / size_t(bins.columns));
-        const uint32_t* begin = bins.edges.data() + bins.begin[index];
-        const uint32_t* end = bins.edges.data() + bins.begin[index + 1];
-        const int x0 = tx * tile, x1 = std::min(width, x0 + tile);
-        const int y0 = ty * tile, y1 = std::min(height, y0 + tile);
+        const EdgeBinTile bin = edgeBinTile(bins, index, width, height);
+        const uint32_t* begin = bin.begin;
+        const uint32_t* end = bin.end;
+        const int x0 = bin.x0, x1 = bin.x1, y0 = bin.y0, y1 = bin.y1;
         int x = x0, y = y0;
         while (y < y1) {
           PixelBlock& block = s.block;

@@ -1,6 +1,7 @@
 #pragma once
 // Where on screen the potential silhouette edges (and the triangles cutting the light) can
 // matter: per-tile lists, and per edge the planes of the per-pixel quick reject.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +33,21 @@ struct EdgeBins {
   std::vector<EdgeScreenTest> cutting_tests;
   uint64_t tiles_tested = 0, tiles_culled = 0;
 };
+
+// One bin tile: its edges and its pixels [x0, x1) x [y0, y1) in a width x height view.
+struct EdgeBinTile {
+  const uint32_t* begin;
+  const uint32_t* end;
+  int x0, x1, y0, y1;
+};
+inline EdgeBinTile edgeBinTile(const EdgeBins& bins, size_t index, int width, int height) {
+  const int tile = 1 << bins.level;
+  const int tx = int(index % size_t(bins.columns)), ty = int(index / size_t(bins.columns));
+  const int x0 = tx * tile, y0 = ty * tile;
+  return EdgeBinTile{bins.edges.data() + bins.begin[index],
+                     bins.edges.data() + bins.begin[index + 1], x0, std::min(width, x0 + tile),
+                     y0, std::min(height, y0 + tile)};
+}
 // `scene_bounds`, when not empty, holds every visible point (Scene::bounds): the regions are cut
 // off where they leave it (widened by the margin), which keeps a shadow's streak toward its
 // vanishing point from reaching across the screen.

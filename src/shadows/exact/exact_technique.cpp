@@ -205,7 +205,6 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     const RayOrigins origins(scene_, view);
     const FacingAway away(scene_, light, view);
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
-    const int tile = 1 << bins.level;
     const dvec3 light_centre(light.center), eye_position(view.eye);
     // A pixel footprint at unit distance, at the image centre (ray_origin.h).
     const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
@@ -217,11 +216,10 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         scratch_slot = std::make_unique<Scratch>(samples_);
       Scratch& scratch = *scratch_slot;
       TileWork& work = tile_work[index];
-      const int tx = int(index % size_t(bins.columns)), ty = int(index / size_t(bins.columns));
-      const uint32_t* begin = bins.edges.data() + bins.begin[index];
-      const uint32_t* end = bins.edges.data() + bins.begin[index + 1];
-      const int x0 = tx * tile, x1 = std::min(width, x0 + tile);
-      const int y0 = ty * tile, y1 = std::min(height, y0 + tile);
+      const EdgeBinTile bin = edgeBinTile(bins, index, width, height);
+      const uint32_t* begin = bin.begin;
+      const uint32_t* end = bin.end;
+      const int x0 = bin.x0, x1 = bin.x1, y0 = bin.y0, y1 = bin.y1;
       // Whether an edge binned here has a triangle cutting the light: only then do the pixels
       // need what the quick reject's test of it reads (PixelBlock::qx ...).
       bool tile_cuts = false;
