@@ -243,8 +243,10 @@ TEST(MaskTechnique, FullResolutionMatchesVolumesWithinTheEightBitLimit) {
   }
 }
 
-// The eye inside a shadow volume (auto takes z-fail there) and the light in the view frustum.
-// If this failed, the masks would count z-fail's caps or far-reaching quads differently.
+// The eye inside a shadow volume (auto takes z-fail there), the light in the view frustum, and
+// the light inside the closed sphere (no silhouette from the centre: the z-fail caps alone make
+// the volume, and everything outside the sphere is dark). If this failed, the masks would count
+// z-fail's caps or far-reaching quads differently, or skip a volume that has no side quads.
 TEST(MaskTechnique, EyeInsideAVolumeAndLightInTheFrustum) {
   struct Case {
     const char* what;
@@ -253,6 +255,7 @@ TEST(MaskTechnique, EyeInsideAVolumeAndLightInTheFrustum) {
   const Case cases[] = {
       {"eye in shadow", testing::sphereOverGround(vec3(0.2f, 0.6f, 0.1f), vec3(4, 0, 3), vec3(0, 12, 0))},
       {"light in frustum", testing::sphereOverGround(vec3(6, 4, 6), vec3(0, 4, 0), vec3(-1, 5, -1))},
+      {"light inside the sphere", testing::sphereOverGround(vec3(4, 3, 4), vec3(0, 1, 0), vec3(0.1f, 2.2f, 0))},
   };
   for (const Case& c : cases) {
     const Frame f = testing::makeEyeFrame(c.scene, 96, 64);

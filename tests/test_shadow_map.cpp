@@ -130,6 +130,39 @@ TEST(ShadowMap, SquareOccluderShadowByHand) {
   }
 }
 
+// A light far from a small scene (a sun), slanted: the square's shadow, shifted by the slant,
+// is still drawn with the light 5.4e3 and 1.6e4 units from a scene 6 units wide. If it failed,
+// the light's frustum would be aimed by float arithmetic at the light's distance (lookAt with a
+// target one unit away from the light was off by more than the fitted spot's width, and the map
+// held nothing) or the map's vertices transformed with too little precision for their texels.
+TEST(ShadowMap, DistantLightKeepsItsShadow) {
+  const vec3 direction(3.0f, 4.0f, 2.0f);
+  // Far away, the square (heights 1 to 1.05) falls shifted by -height x (x, z) / y of the light.
+  const dvec3 shift = -1.025 * dvec3(direction.x, 0.0, direction.z) / double(direction.y);
+  for (const float distance : {1e3f, 3e3f}) {
+    const Frame f = squareOverGround(1.0f, direction * distance);
+    for (const int kernel : {1, 3}) {
+      const Image<float> v = visibility(shadowMap(1024, kernel), f);
+      size_t inside = 0, outside = 0, wrong = 0;
+      forGroundPixels(f, 1.0f, [&](int x, int y, const dvec3& p) {
+        const dvec3 q = p - shift;
+        const double r = std::max(std::fabs(q.x), std::fabs(q.z));
+        if (r < 0.35) {
+          ++inside;
+          wrong += v.at(x, y) != 0.0f;
+        } else if (r > 1.0) {
+          ++outside;
+          wrong += v.at(x, y) != 1.0f;
+        }
+      });
+      EXPECT_GT(inside, 20u);  // the box hides part of its shifted shadow from the camera
+      EXPECT_GT(outside, 1000u);
+      EXPECT_EQ(wrong, 0u) << "light " << glm::length(direction) * distance
+                           << " units away, pcf " << kernel;
+    }
+  }
+}
+
 // Percentage-closer filtering gives fractions: with a 5 x 5 kernel some pixels along the
 // square's shadow boundary lie strictly between 0 and 1; a plain map (1 x 1) gives only 0 or 1.
 // If it failed, the kernel would not be applied, or the plain map would average something.

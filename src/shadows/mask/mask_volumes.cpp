@@ -13,7 +13,9 @@ MaskVolumes maskVolumes(const Scene& scene, const vec3& centre, const View& view
     const Mesh& mesh = scene.meshes[m];
     CasterVolume volume = casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto);
     stats.silhouette_edges += volume.silhouette.edges.size();
-    if (volume.silhouette.edges.empty()) continue;
+    // A light inside a closed caster has no silhouette from its centre, but the caps of the
+    // z-fail volume still enclose everything outside the caster: only z-pass has nothing to draw.
+    if (volume.silhouette.edges.empty() && !volume.zfail) continue;
     // As shadow_stencil.cpp draws them (without its owners, which `volume` does not use):
     // side quads (v1, v0, v0', v1') from the light centre to infinity, and with z-fail the caps.
     ClipTriangles polygons(eye.clip_vertices);

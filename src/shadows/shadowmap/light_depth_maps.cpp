@@ -78,14 +78,23 @@ LightDepthMaps drawLightDepthMaps(const Scene& scene, const SceneTriangles& tria
   ids.resizeForOverwrite(size, size);
   for (const LightFace& face : frustums.faces) {
     const float fov = float(2.0 * std::atan(face.tan_half) * 180.0 / 3.14159265358979323846);
-    const View view = View::lookAt(size, size, light.center, vec3(centre + face.axis),
-                                   vec3(face.up), fov, near_plane);
+    // The target as far from the light as the scene reaches: lookAt's direction is the float
+    // difference target - centre, which one unit away from a light 1e4 units out would be off
+    // by some 1e-3 radians, more than a spot fitted around a distant scene spans.
+    const dvec3 target = centre + face.axis * std::max(1.0, far);
+    const View view =
+        View::lookAt(size, size, light.center, vec3(target), vec3(face.up), fov, near_plane);
+    // In double: a float view-projection holds the light's distance times the projection's
+    // scale in its translation, and loses to cancellation what a distant light's narrow spot
+    // needs (a light 1e5 units out lost whole shadows). Lookups use the same matrix.
+    const dmat4 view_projection =
+        dmat4(view.projection) * glm::lookAt(centre, target, dvec3(face.up));
     size_t base = 0;
     for (const Mesh& mesh : scene.meshes) {
       parallelFor((mesh.positions.size() + 4095) / 4096, [&](size_t chunk) {
         const size_t end = std::min(mesh.positions.size(), (chunk + 1) * 4096);
         for (size_t i = chunk * 4096; i < end; ++i)
-          clip[base + i] = view.toClip(vec4(mesh.positions[i], 1.0f));
+          clip[base + i] = vec4(view_projection * dvec4(dvec3(mesh.positions[i]), 1.0));
       });
       base += mesh.positions.size();
     }
@@ -95,7 +104,7 @@ LightDepthMaps drawLightDepthMaps(const Scene& scene, const SceneTriangles& tria
     depth.resizeForOverwrite(size, size);
     rasterizeDepth(tris, depth, ids, stats, simd);
     maps.views.push_back(view);
-    maps.matrices.push_back(dmat4(view.view_projection));
+    maps.matrices.push_back(view_projection);
     // The projection's own scale (rounded to float), so texel sizes match what was drawn.
     maps.tan_half.push_back(1.0 / double(view.projection[1][1]));
   }
