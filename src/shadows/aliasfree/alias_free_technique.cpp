@@ -157,10 +157,11 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
       float* visibility = result.visibility.row(y);
       const size_t base = row * size_t(width);
       size_t count = 0;
+      OriginTriangle triangle;  // the row's last visible triangle (RayOrigins::start)
       for (int x = 0; x < width; ++x) {
         if (!(depth[x] > 0.0f)) continue;  // background stays lit
         ++row_reads[row];
-        const RayStart start = origins.start(x, y, depth[x], primitive[x]);
+        const RayStart start = origins.start(x, y, depth[x], primitive[x], triangle);
         if (glm::length(centre - start.origin) == 0.0) continue;  // at the light: lit
         if (start.intoSurface(centre)) {
           visibility[x] = 0.0f;

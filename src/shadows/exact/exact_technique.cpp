@@ -62,6 +62,7 @@ struct Scratch {
   int px[kBlockPixels], py[kBlockPixels];
   std::vector<PixelEdge> edges[kBlockPixels];
   std::vector<const CuttingTriangle*> cutting[kBlockPixels];
+  OriginTriangle origin_triangle;  // the last visible triangle set up (RayOrigins::start)
   explicit Scratch(const SampleSet& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
         into(size_t(s.n)), cone_samples(size_t(s.n)) {}
@@ -248,7 +249,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           f.primitive = id;
           if (!away.clearOfLight(id)) {
             float known = 0.0f;
-            if (!setupPixel(x, y, block.z[i], id, f.stencil, origins, light, f, known)) {
+            if (!setupPixel(x, y, block.z[i], id, f.stencil, origins, light,
+                            scratch.origin_triangle, f, known)) {
               soft.at(x, y) = known;
               continue;
             }
@@ -293,7 +295,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             if (!f.ready) {
               float known = 0.0f;  // never set: a clear pixel is outside the light
               setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
-                         origins, light, f, known);
+                         origins, light, scratch.origin_triangle, f, known);
             }
             if (!edgeAtPixel(edges.edges[*it], edges.triangles.data(), f, samples_, pixel_edge,
                              weight))
@@ -320,7 +322,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             if (!f.ready) {
               float known = 0.0f;  // never set: a clear pixel is outside the light
               setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
-                         origins, light, f, known);
+                         origins, light, scratch.origin_triangle, f, known);
             }
             // Outside the cone, or in front of the light, where the edge sums count it.
             if (classifyCutting(t.v[0], t.v[1], t.v[2], f) != CuttingPlace::Across) continue;

@@ -103,12 +103,13 @@ bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const Cut
 }
 // Sets up the frame of a pixel; false when its visibility is already known (`known`).
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
-                const RayOrigins& origins, const Light& light, PixelFrame& f, float& known) {
+                const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
+                PixelFrame& f, float& known) {
   const dvec3 c(light.center);
   const double r = light.radius;
   f.ready = true;
   f.primitive = primitive;
-  f.start = origins.start(x, y, depth, primitive);
+  f.start = origins.start(x, y, depth, primitive, triangle);
   // A point inside the light sees all of it (as the oracle has it).
   if (glm::length(c - f.start.origin) <= r) {
     known = 1.0f;

@@ -71,8 +71,10 @@ SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const Sam
 bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t);
 
 // Sets up the frame of a pixel; false when its visibility is already known (`known`).
+// `triangle`: the work item's last visible triangle, for RayOrigins::start.
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
-                const RayOrigins& origins, const Light& light, PixelFrame& f, float& known);
+                const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
+                PixelFrame& f, float& known);
 
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.

@@ -26,23 +26,16 @@ double magnitude(const dvec3& v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
-// Moves q, a point of triangle abc (n = (b - a) x (c - a)), to at least eps inside each edge,
-// perpendicular to the edges it is closer to than that: a point on an edge lies in the plane
-// of a neighbour meeting the triangle at 90 degrees (an inside corner), and a ray from there
-// would hit that neighbour at t = 0 whichever way it went. Points farther inside stay put.
-dvec3 awayFromEdges(dvec3 q, const dvec3& a, const dvec3& b, const dvec3& c, const dvec3& n,
-                    double eps) {
-  const double perimeter = glm::length(b - a) + glm::length(c - b) + glm::length(a - c);
-  if (glm::length(n) / perimeter <= eps) return (a + b + c) / 3.0;  // inradius <= eps
-  const dvec3 corners[3] = {a, b, c};
+// Moves q, a point of triangle t, to at least eps inside each edge, perpendicular to the edges
+// it is closer to than that: a point on an edge lies in the plane of a neighbour meeting the
+// triangle at 90 degrees (an inside corner), and a ray from there would hit that neighbour at
+// t = 0 whichever way it went. Points farther inside stay put.
+dvec3 awayFromEdges(dvec3 q, const OriginTriangle& t, double eps) {
+  if (t.length / t.perimeter <= eps) return (t.a + t.b + t.c) / 3.0;  // inradius <= eps
+  const dvec3 corners[3] = {t.a, t.b, t.c};
   for (int i = 0; i < 3; ++i) {
-    const dvec3& e0 = corners[i];
-    const dvec3& e1 = corners[(i + 1) % 3];
-    // In-plane normal of edge e0 -> e1, pointing into the triangle (the vertices are counter-
-    // clockwise about n, so n x edge points inward).
-    const dvec3 inward = glm::normalize(glm::cross(n, e1 - e0));
-    const double distance = glm::dot(q - e0, inward);
-    if (distance < eps) q += inward * (eps - distance);
+    const double distance = glm::dot(q - corners[i], t.inward[i]);
+    if (distance < eps) q += t.inward[i] * (eps - distance);
   }
   return q;
 }
@@ -111,7 +104,31 @@ RayOrigins::RayOrigins(const Scene& scene, const View& view)
 // front of the neighbour's plane too, for any angle short of folding flat onto the triangle.
 // A triangle that does not hold p (a degenerate one, one seen exactly edge-on, or ids that
 // disagree with the depth) falls back to stepping p toward the eye by kFallbackFootprints.
-RayStart RayOrigins::start(int x, int y, float depth, uint32_t primitive) const {
+void RayOrigins::deriveTriangle(uint32_t primitive, OriginTriangle& t) const {
+  const size_t mesh =
+      size_t(std::upper_bound(offsets_.begin(), offsets_.end(), uint64_t(primitive)) -
+             offsets_.begin()) - 1;
+  const Mesh& m = scene_.meshes[mesh];
+  const size_t triangle = size_t(primitive - offsets_[mesh]);
+  t.primitive = primitive;
+  t.a = dvec3(m.vertex(triangle, 0));
+  t.b = dvec3(m.vertex(triangle, 1));
+  t.c = dvec3(m.vertex(triangle, 2));
+  t.winding_normal = glm::cross(t.b - t.a, t.c - t.a);
+  t.eye_side = glm::dot(t.winding_normal, dvec3(view_.eye) - t.a);
+  t.length = glm::length(t.winding_normal);
+  t.extent = std::max({glm::length(t.b - t.a), glm::length(t.c - t.a), glm::length(t.c - t.b)});
+  t.perimeter = glm::length(t.b - t.a) + glm::length(t.c - t.b) + glm::length(t.a - t.c);
+  const dvec3 corners[3] = {t.a, t.b, t.c};
+  for (int i = 0; i < 3; ++i) {
+    // In-plane normal of edge i -> i + 1, pointing into the triangle (the vertices are
+    // counter-clockwise about the winding normal, so n x edge points inward).
+    t.inward[i] = glm::normalize(glm::cross(t.winding_normal, corners[(i + 1) % 3] - corners[i]));
+  }
+}
+
+RayStart RayOrigins::start(int x, int y, float depth, uint32_t primitive,
+                           OriginTriangle& t) const {
   const dvec3 p = view_.unproject(x, y, depth);
   const dvec3 eye(view_.eye);
   const dvec3 to_eye = eye - p;
@@ -119,28 +136,17 @@ RayStart RayOrigins::start(int x, int y, float depth, uint32_t primitive) const 
   const double footprint = distance * pixel_angle_;
   RayStart start;
   if (primitive != kNoPrimitive && primitive < triangleCount()) {
-    const size_t mesh =
-        size_t(std::upper_bound(offsets_.begin(), offsets_.end(), uint64_t(primitive)) -
-               offsets_.begin()) - 1;
-    const Mesh& m = scene_.meshes[mesh];
-    const size_t triangle = size_t(primitive - offsets_[mesh]);
-    const dvec3 a(m.vertex(triangle, 0)), b(m.vertex(triangle, 1)), c(m.vertex(triangle, 2));
-    const dvec3 winding_normal = glm::cross(b - a, c - a);
-    dvec3 normal = winding_normal;
-    const double eye_side = glm::dot(normal, eye - a);
-    const double length = glm::length(normal);
-    const dvec3 on_surface = closestPointOnTriangle(p, a, b, c);
+    if (t.primitive != primitive) deriveTriangle(primitive, t);
+    const dvec3 on_surface = closestPointOnTriangle(p, t.a, t.b, t.c);
     // Degenerate triangles and triangles seen exactly edge-on have no usable plane.
-    if (length > 0.0 && eye_side != 0.0 && std::isfinite(eye_side) &&
+    if (t.length > 0.0 && t.eye_side != 0.0 && std::isfinite(t.eye_side) &&
         glm::length(on_surface - p) <= kMaxSnapFootprints * footprint) {
-      if (eye_side < 0.0) normal = -normal;
-      const double extent =
-          std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
-      const double eps = kSurfaceOffset * (magnitude(on_surface) + extent);
-      const dvec3 origin = awayFromEdges(on_surface, a, b, c, winding_normal, eps);
-      start.plane_point = a;
+      const dvec3 normal = t.eye_side < 0.0 ? -t.winding_normal : t.winding_normal;
+      const double eps = kSurfaceOffset * (magnitude(on_surface) + t.extent);
+      const dvec3 origin = awayFromEdges(on_surface, t, eps);
+      start.plane_point = t.a;
       start.plane_normal = normal;
-      start.origin = origin + normal * (eps / length);
+      start.origin = origin + normal * (eps / t.length);
       return start;
     }
   }

@@ -32,6 +32,21 @@ struct RayStart {
 // techniques that cull by the depth buffer and then shade the oracle's points.
 inline constexpr double kMaxOriginOffsetFootprints = 1.25;
 
+// What start() derives from the visible triangle alone (its vertices, normals and edge
+// directions: a dozen square roots), kept for the next pixel of the same triangle. A row
+// crosses few triangles on most scenes, so a caller walking pixels in order keeps one of these
+// per thread and passes it to every call; the answers are bit for bit those without it.
+struct OriginTriangle {
+  uint32_t primitive = 0xffffffffu;  // the triangle held, or none
+  dvec3 a{0.0}, b{0.0}, c{0.0};
+  dvec3 winding_normal{0.0};  // (b - a) x (c - a)
+  dvec3 inward[3]{};          // unit in-plane normals of edges ab, bc, ca, into the triangle
+  double length = 0.0;        // |winding_normal|
+  double eye_side = 0.0;      // winding_normal . (eye - a)
+  double extent = 0.0;        // longest edge
+  double perimeter = 0.0;
+};
+
 class RayOrigins {
  public:
   RayOrigins(const Scene& scene, const View& view);
@@ -39,8 +54,13 @@ class RayOrigins {
   // Triangles in the scene: valid ids are below this (see EyeBuffers::primitive).
   uint64_t triangleCount() const { return offsets_.back(); }
 
-  // `primitive` is the pixel's global triangle id or kNoPrimitive; depth > 0.
-  RayStart start(int x, int y, float depth, uint32_t primitive) const;
+  // `primitive` is the pixel's global triangle id or kNoPrimitive; depth > 0. `triangle`
+  // holds the last visible triangle's derived values (OriginTriangle).
+  RayStart start(int x, int y, float depth, uint32_t primitive, OriginTriangle& triangle) const;
+  RayStart start(int x, int y, float depth, uint32_t primitive) const {
+    OriginTriangle triangle;
+    return start(x, y, depth, primitive, triangle);
+  }
 
   // Throws penumbra::Error naming the pixel when an eye pass's id is not a triangle of the
   // scene (kNoPrimitive is fine): checked once before the per-pixel work trusts them.
@@ -49,6 +69,8 @@ class RayOrigins {
  private:
   const Scene& scene_;
   const View& view_;
+  void deriveTriangle(uint32_t primitive, OriginTriangle& triangle) const;
+
   double pixel_angle_;             // radians per pixel at the image centre
   std::vector<uint64_t> offsets_;  // first global id of every mesh, then the total
 };

@@ -104,6 +104,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
     RowCounters& counters = row_counters[row];
     std::vector<ShadowRay> rays;
     std::vector<uint8_t> blocked;
+    OriginTriangle triangle;  // the row's last visible triangle (RayOrigins::start)
 
     if (hard) {
       // One ray per pixel to the light centre; a row's rays converge on it, so they make
@@ -113,7 +114,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
         if (!(depth[x] > 0.0f)) continue;  // background (depth 0) stays fully lit
         ++counters.z_reads;
         const RayStart start =
-            origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive);
+            origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive, triangle);
         const dvec3 to_light = center - start.origin;
         const double distance = glm::length(to_light);
         if (distance == 0.0) continue;  // the light sits on the point: nothing in between
@@ -142,7 +143,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
       if (!(depth[x] > 0.0f)) continue;
       ++counters.z_reads;
       const RayStart start =
-          origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive);
+          origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive, triangle);
       if (!fixed) stratifiedSamples(n, options.seed, uint32_t(x), uint32_t(y), samples.data());
       const vec3 origin(start.origin);
       size_t traced = 0;
