@@ -18,7 +18,7 @@
 #include "shadows/technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_shadow_map {
 
 using Frame = testing::EyeFrame;
 
@@ -67,6 +67,28 @@ void forGroundPixels(const Frame& f, float scale, Fn&& fn) {
   }
 }
 
+// The square's shadow on the ground, centred at `centre` (world units / scale): pixels well
+// inside it (|x|, |z| < 0.35 from the centre) must be 0, pixels well outside (> 1.0) 1.
+struct SquareShadowCheck {
+  size_t inside = 0, outside = 0, wrong = 0;
+};
+SquareShadowCheck checkSquareShadow(const Frame& f, float scale, const Image<float>& v,
+                                    const dvec3& centre = dvec3(0.0)) {
+  SquareShadowCheck check;
+  forGroundPixels(f, scale, [&](int x, int y, const dvec3& p) {
+    const dvec3 q = p - centre;
+    const double r = std::max(std::fabs(q.x), std::fabs(q.z));
+    if (r < 0.35) {
+      ++check.inside;
+      check.wrong += v.at(x, y) != 0.0f;
+    } else if (r > 1.0) {
+      ++check.outside;
+      check.wrong += v.at(x, y) != 1.0f;
+    }
+  });
+  return check;
+}
+
 // Error against the oracle's one-ray hard shadow, as the fraction of covered pixels on the other
 // side of 0.5, must fall strictly from 128 to 512 to 2048 texels per face and be small at 2048.
 // If it did not fall, the map would not be sampled where the points project (wrong face, wrong
@@ -109,21 +131,11 @@ TEST(ShadowMap, SquareOccluderShadowByHand) {
     const Frame f = squareOverGround(scale);
     for (const int resolution : {64, 256, 1024}) {
       for (const int kernel : {1, 3}) {
-        const Image<float> v = visibility(shadowMap(resolution, kernel), f);
-        size_t inside = 0, outside = 0, wrong = 0;
-        forGroundPixels(f, scale, [&](int x, int y, const dvec3& p) {
-          const double r = std::max(std::fabs(p.x), std::fabs(p.z));
-          if (r < 0.35) {
-            ++inside;
-            wrong += v.at(x, y) != 0.0f;
-          } else if (r > 1.0) {
-            ++outside;
-            wrong += v.at(x, y) != 1.0f;
-          }
-        });
-        EXPECT_GT(inside, 50u);
-        EXPECT_GT(outside, 1000u);
-        EXPECT_EQ(wrong, 0u) << "scale " << scale << ", " << resolution << " texels, pcf "
+        const SquareShadowCheck c =
+            checkSquareShadow(f, scale, visibility(shadowMap(resolution, kernel), f));
+        EXPECT_GT(c.inside, 50u);
+        EXPECT_GT(c.outside, 1000u);
+        EXPECT_EQ(c.wrong, 0u) << "scale " << scale << ", " << resolution << " texels, pcf "
                              << kernel;
       }
     }
@@ -142,22 +154,11 @@ TEST(ShadowMap, DistantLightKeepsItsShadow) {
   for (const float distance : {1e3f, 3e3f}) {
     const Frame f = squareOverGround(1.0f, direction * distance);
     for (const int kernel : {1, 3}) {
-      const Image<float> v = visibility(shadowMap(1024, kernel), f);
-      size_t inside = 0, outside = 0, wrong = 0;
-      forGroundPixels(f, 1.0f, [&](int x, int y, const dvec3& p) {
-        const dvec3 q = p - shift;
-        const double r = std::max(std::fabs(q.x), std::fabs(q.z));
-        if (r < 0.35) {
-          ++inside;
-          wrong += v.at(x, y) != 0.0f;
-        } else if (r > 1.0) {
-          ++outside;
-          wrong += v.at(x, y) != 1.0f;
-        }
-      });
-      EXPECT_GT(inside, 20u);  // the box hides part of its shifted shadow from the camera
-      EXPECT_GT(outside, 1000u);
-      EXPECT_EQ(wrong, 0u) << "light " << glm::length(direction) * distance
+      const SquareShadowCheck c =
+          checkSquareShadow(f, 1.0f, visibility(shadowMap(1024, kernel), f), shift);
+      EXPECT_GT(c.inside, 20u);  // the box hides part of its shifted shadow from the camera
+      EXPECT_GT(c.outside, 1000u);
+      EXPECT_EQ(c.wrong, 0u) << "light " << glm::length(direction) * distance
                            << " units away, pcf " << kernel;
     }
   }
@@ -225,5 +226,5 @@ TEST(ShadowMap, BiasOptionsParseAsNumbers) {
   EXPECT_EQ(config.options<ShadowMapOptions>().slope_bias, 2.0);
 }
 
-}  // namespace
+}  // namespace test_shadow_map
 }  // namespace penumbra
