@@ -22,7 +22,7 @@
 #include "shadows/reference/ray_origin.h"
 
 namespace penumbra {
-namespace {
+namespace test_alias_free {
 
 using testing::compareHardWithOracle;
 using testing::sphereOverGround;
@@ -276,5 +276,5 @@ TEST(AliasFreeWork, OneFrustumOrCubeFaces) {
   EXPECT_NE(around.tileOf(0), around.tileOf(1));
 }
 
-}  // namespace
+}  // namespace test_alias_free
 }  // namespace penumbra

@@ -13,7 +13,7 @@
 #include "render/image_io.h"
 
 namespace penumbra {
-namespace {
+namespace test_cli_bad_input {
 
 namespace fs = std::filesystem;
 
@@ -105,5 +105,5 @@ TEST_F(CliBadInput, CompareWithNaNFails) {
   EXPECT_EQ(run("compare zero.exr zero.exr").exit_code, 0);
 }
 
-}  // namespace
+}  // namespace test_cli_bad_input
 }  // namespace penumbra

@@ -14,7 +14,7 @@
 #include "render/image_io.h"
 
 namespace penumbra {
-namespace {
+namespace test_cli_errors {
 
 namespace fs = std::filesystem;
 
@@ -153,5 +153,5 @@ TEST_F(Cli, RenderDefaultOutput) {
   EXPECT_TRUE(fs::exists(path("out/spheres.png")));
 }
 
-}  // namespace
+}  // namespace test_cli_errors
 }  // namespace penumbra

@@ -19,7 +19,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_cli_models {
 
 using test::ScopedEnv;
 using testing::CliRun;
@@ -210,5 +210,5 @@ TEST_F(ModelsCli, FetchFailuresAreClearAndLeaveNoModel) {
   }
 }
 
-}  // namespace
+}  // namespace test_cli_models
 }  // namespace penumbra

@@ -12,7 +12,7 @@
 #endif
 
 namespace penumbra {
-namespace {
+namespace test_core_memory {
 
 TEST(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
 #if !defined(__GLIBC__)
@@ -36,5 +36,5 @@ TEST(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
 #endif
 }
 
-}  // namespace
+}  // namespace test_core_memory
 }  // namespace penumbra

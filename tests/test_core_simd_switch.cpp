@@ -9,7 +9,7 @@
 #include "core/simd_dispatch.h"
 
 namespace penumbra {
-namespace {
+namespace test_core_simd_switch {
 
 class SimdSwitch : public testing::CliTest {};
 
@@ -31,5 +31,5 @@ TEST_F(SimdSwitch, EnvironmentSendsTheKernelsScalarAndTheImageStaysTheSame) {
   EXPECT_EQ(testing::slurp(path("simd.png")), testing::slurp(path("scalar.png")));
 }
 
-}  // namespace
+}  // namespace test_core_simd_switch
 }  // namespace penumbra

@@ -17,7 +17,7 @@
 #include "shadows/coverage/square_coverage_kernel.h"
 
 namespace penumbra {
-namespace {
+namespace test_coverage_area {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -283,5 +283,5 @@ TEST(CoverageArea, SymmetriesOfTheCoverage) {
   }
 }
 
-}  // namespace
+}  // namespace test_coverage_area
 }  // namespace penumbra

@@ -22,7 +22,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_coverage_technique {
 
 using testing::EyeFrame;
 
@@ -298,11 +298,11 @@ TEST(LightShapes, SceneFilesReadShapesAndRefuseBadOnes) {
   }
 }
 
-}  // namespace
+}  // namespace test_coverage_technique
 }  // namespace penumbra
 
 namespace penumbra {
-namespace {
+namespace test_coverage_technique {
 
 // Scenes built in code are checked too (Scene::finalize): a disk with a zero normal, a skewed
 // rectangle, or a rectangle whose radius is not its half diagonal is refused, naming the light.
@@ -329,5 +329,5 @@ TEST(LightShapes, FinalizeChecksShapes) {
   }
 }
 
-}  // namespace
+}  // namespace test_coverage_technique
 }  // namespace penumbra

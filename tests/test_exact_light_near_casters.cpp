@@ -22,7 +22,7 @@
 #include "shadows/technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_exact_light_near_casters {
 
 Image<float> renderWith(const TechniqueConfig& config, const testing::EyeFrame& f, bool simd) {
   const std::unique_ptr<PreparedTechnique> prepared = prepareTechnique(config, f.scene);
@@ -81,5 +81,5 @@ TEST(ExactLightNearCasters, QuickRejectKeepsEdgesOfTrianglesNotInFront) {
   }
 }
 
-}  // namespace
+}  // namespace test_exact_light_near_casters
 }  // namespace penumbra

@@ -33,7 +33,7 @@
 #include "shadow_test_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_exact_technique {
 
 using Frame = testing::EyeFrame;
 
@@ -712,5 +712,5 @@ TEST(ExactTechnique, PenumbraErrorNoWorseThanTheOracleAtTheSameCount) {
   }
 }
 
-}  // namespace
+}  // namespace test_exact_technique
 }  // namespace penumbra

@@ -15,7 +15,7 @@
 #include "metrics/heatmap.h"
 
 namespace penumbra {
-namespace {
+namespace test_fidelity {
 
 Image<float> imageOf(int w, int h, const std::vector<float>& values) {
   Image<float> image(w, h);
@@ -200,5 +200,5 @@ TEST_F(FidelityCli, RejectsRayTracedTechniqueAndBadSize) {
   EXPECT_NE(r.err.find("below"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace test_fidelity
 }  // namespace penumbra

@@ -37,7 +37,7 @@
 #include "scene/scene_file.h"
 
 namespace penumbra::testing {
-namespace {
+namespace test_frame_digests {
 
 using nlohmann::json;
 
@@ -496,5 +496,5 @@ TEST(FrameDigestSetup, ConfigKeysAreUnique) {
   }
 }
 
-}  // namespace
+}  // namespace test_frame_digests
 }  // namespace penumbra::testing

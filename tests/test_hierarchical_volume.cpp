@@ -18,7 +18,7 @@
 #include "shadows/volume/shadow_stencil.h"
 
 namespace penumbra {
-namespace {
+namespace test_hierarchical_volume {
 
 using testing::sceneModelsPresent;
 using testing::sphereOverGround;
@@ -316,11 +316,11 @@ TEST(HierarchicalVolume, HandMadeCountersZFailNearSurface) {
   EXPECT_EQ(b.pixels_rasterized, 512u);
 }
 
-}  // namespace
+}  // namespace test_hierarchical_volume
 }  // namespace penumbra
 
 namespace penumbra {
-namespace {
+namespace test_hierarchical_volume {
 
 // A z-pass volume has no light caps, so across a silhouette edge the drawn count changes even
 // where the quad lies wholly in front of the tile's surfaces: a tile such an edge crosses is a
@@ -364,5 +364,5 @@ TEST(HierarchicalVolume, SilhouetteEdgeMakesABoundaryTile) {
   EXPECT_EQ(s.tiles_shadowed, 1u) << "tile (2,1)";
 }
 
-}  // namespace
+}  // namespace test_hierarchical_volume
 }  // namespace penumbra

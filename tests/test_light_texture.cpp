@@ -22,7 +22,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_light_texture {
 
 using test::contains;
 using test::errorMessage;
@@ -313,5 +313,5 @@ TEST(LightTexture, SceneFileTextureIsCheckedByKeyPath) {
   EXPECT_EQ(loaded.lights[0].texture->texels[0], vec3(1.0f, 0.0f, 0.0f));
 }
 
-}  // namespace
+}  // namespace test_light_texture
 }  // namespace penumbra

@@ -22,7 +22,7 @@
 #include "shadows/technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_mask_technique {
 
 using Frame = testing::EyeFrame;
 
@@ -294,11 +294,11 @@ TEST(MaskTechnique, FullResolutionMatchesVolumesOnSharedModels) {
   }
 }
 
-}  // namespace
+}  // namespace test_mask_technique
 }  // namespace penumbra
 
 namespace penumbra {
-namespace {
+namespace test_mask_technique {
 
 // k boxes over a ground plane, lit from high above: in a row along the view ray (the ray to the
 // ground point under box 0 crosses the shadow prisms of boxes k-1 .. 1 in front of it and ends
@@ -381,11 +381,11 @@ TEST(MaskTechnique, EightBitLimitOnKLayersOfVolume) {
   }
 }
 
-}  // namespace
+}  // namespace test_mask_technique
 }  // namespace penumbra
 
 namespace penumbra {
-namespace {
+namespace test_mask_technique {
 
 // Section 4.5: the mask at 1/2 and 1/4 of the resolution, with its own depth pass, bilinearly
 // magnified. Against the full-resolution mask and the hard oracle (one ray to the centre), over
@@ -437,5 +437,5 @@ TEST(MaskTechnique, LowResolutionMasksErrorAndPixelsSaved) {
   }
 }
 
-}  // namespace
+}  // namespace test_mask_technique
 }  // namespace penumbra

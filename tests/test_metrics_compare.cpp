@@ -6,7 +6,7 @@
 #include "metrics/image_compare.h"
 
 namespace penumbra {
-namespace {
+namespace test_metrics_compare {
 
 // Errors 0, 0.1, 0.2, 0.5: MAE 0.2, RMSE sqrt(0.3 / 4), max 0.5; with tolerance 0.15, two of
 // four pixels are off. Wrong averaging, a missing square root or >= instead of > would show.
@@ -127,5 +127,5 @@ TEST(MetricsCompare, ExactSignedZeroAndNaN) {
   EXPECT_THROW(compareExact(Image<float>(2, 2), Image<float>(2, 3)), Error);
 }
 
-}  // namespace
+}  // namespace test_metrics_compare
 }  // namespace penumbra

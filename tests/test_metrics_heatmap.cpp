@@ -6,7 +6,7 @@
 #include "metrics/heatmap.h"
 
 namespace penumbra {
-namespace {
+namespace test_metrics_heatmap {
 
 int brightness(const glm::u8vec3& c) { return int(c.x) + int(c.y) + int(c.z); }
 
@@ -65,5 +65,5 @@ TEST(MetricsHeatmap, VisibilityToImageIsLinearGray) {
   EXPECT_EQ(img[3], glm::u8vec3(255));
 }
 
-}  // namespace
+}  // namespace test_metrics_heatmap
 }  // namespace penumbra

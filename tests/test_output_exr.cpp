@@ -12,7 +12,7 @@
 #include "render/image_io.h"
 
 namespace penumbra {
-namespace {
+namespace test_output_exr {
 
 namespace fs = std::filesystem;
 
@@ -104,5 +104,5 @@ TEST(OutputImageFile, ReadsByExtension) {
   fs::remove_all(dir);
 }
 
-}  // namespace
+}  // namespace test_output_exr
 }  // namespace penumbra

@@ -10,7 +10,7 @@
 #include "render/image_io.h"
 
 namespace penumbra {
-namespace {
+namespace test_output_png {
 
 namespace fs = std::filesystem;
 
@@ -160,5 +160,5 @@ TEST(OutputPaths, IndexedOutputPath) {
   EXPECT_EQ(indexedOutputPath("noext", 2), "noext.2");
 }
 
-}  // namespace
+}  // namespace test_output_png
 }  // namespace penumbra

@@ -7,7 +7,7 @@
 #include "core/progress.h"
 
 namespace penumbra {
-namespace {
+namespace test_output_progress {
 
 TEST(OutputProgress, FormatsLine) {
   const std::string line = formatProgressLine("rays", 250, 1000, 2.0, 100);
@@ -71,5 +71,5 @@ TEST(OutputProgress, DisabledBarIsSilent) {
   EXPECT_EQ(bar.done(), 5u);
 }
 
-}  // namespace
+}  // namespace test_output_progress
 }  // namespace penumbra

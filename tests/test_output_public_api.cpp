@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-namespace {
+namespace test_output_public_api {
 
 // If the public header missed a module, this would not compile; if the frame's pieces did not
 // fit together (one visibility buffer per light, colour of the view's size), it would fail.
@@ -23,4 +23,4 @@ TEST(OutputPublicApi, RendersAndMeasuresATinyFrame) {
   EXPECT_EQ(d.max_error, 0.0);
 }
 
-}  // namespace
+}  // namespace test_output_public_api

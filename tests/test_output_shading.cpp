@@ -7,7 +7,7 @@
 #include "render/shading.h"
 
 namespace penumbra {
-namespace {
+namespace test_output_shading {
 
 constexpr int kSize = 33;  // odd: pixel (16, 16)'s centre is the image centre, on the view axis
 constexpr int kCentre = kSize / 2;
@@ -180,5 +180,5 @@ TEST(OutputShading, RejectsMismatchedBuffers) {
   EXPECT_THROW(shadeFrame(scene, other, eye, {nullptr}), Error);
 }
 
-}  // namespace
+}  // namespace test_output_shading
 }  // namespace penumbra

@@ -12,7 +12,7 @@
 #include "render/stats_json.h"
 
 namespace penumbra {
-namespace {
+namespace test_output_stats_json {
 
 // A frame assembled by hand: the stats writer only reports what it is given.
 struct FakeFrame {
@@ -137,5 +137,5 @@ TEST(OutputStatsJson, VolumeModeNames) {
   EXPECT_THROW(config.set("volume-mode", "zmaybe"), Error);
 }
 
-}  // namespace
+}  // namespace test_output_stats_json
 }  // namespace penumbra

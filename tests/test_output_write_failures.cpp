@@ -17,7 +17,7 @@
 #include "render/output_file.h"
 
 namespace penumbra {
-namespace {
+namespace test_output_write_failures {
 
 namespace fs = std::filesystem;
 
@@ -100,5 +100,5 @@ TEST_F(OutputWriteFailuresCli, RenderToFullDiskFails) {
   }
 }
 
-}  // namespace
+}  // namespace test_output_write_failures
 }  // namespace penumbra

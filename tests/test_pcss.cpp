@@ -13,7 +13,7 @@
 #include "shadows/technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_pcss {
 
 using Frame = testing::EyeFrame;
 
@@ -83,5 +83,5 @@ TEST(Pcss, ZeroRadiusIsThePlainShadowMap) {
   EXPECT_TRUE(a == b);
 }
 
-}  // namespace
+}  // namespace test_pcss
 }  // namespace penumbra

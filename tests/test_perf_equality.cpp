@@ -22,7 +22,7 @@
 #include "scene/builtin_scenes.h"
 
 namespace penumbra {
-namespace {
+namespace test_perf_equality {
 
 using testing::screenToClip;
 using testing::TestRandom;
@@ -447,5 +447,5 @@ TEST(PerfEquality, RenderFrameReuseEqualsFresh) {
   }
 }
 
-}  // namespace
+}  // namespace test_perf_equality
 }  // namespace penumbra

@@ -9,7 +9,7 @@
 #include "raster_test_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_raster_coverage {
 
 using testing::screenToClip;
 using testing::TestRandom;
@@ -172,5 +172,5 @@ TEST(RasterCoverage, WindingDoesNotChangeCoverageOrDepth) {
   }
 }
 
-}  // namespace
+}  // namespace test_raster_coverage
 }  // namespace penumbra

@@ -14,7 +14,7 @@
 #include "raster_test_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_raster_cull_tiles {
 
 using testing::TestRandom;
 
@@ -216,5 +216,5 @@ TEST(RasterCullTiles, TwoLevelStencilEqualsPerPixelStencil) {
   }
 }
 
-}  // namespace
+}  // namespace test_raster_cull_tiles
 }  // namespace penumbra

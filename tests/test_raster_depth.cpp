@@ -9,7 +9,7 @@
 #include "raster_test_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_raster_depth {
 
 using testing::screenToClip;
 using testing::TestRandom;
@@ -152,5 +152,5 @@ TEST(RasterDepth, TileRangesBoundTheirPixels) {
   EXPECT_THROW(buffer.tileRange(9), Error);
 }
 
-}  // namespace
+}  // namespace test_raster_depth
 }  // namespace penumbra

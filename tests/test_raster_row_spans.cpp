@@ -14,7 +14,7 @@
 #include "raster_test_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_raster_row_spans {
 
 using testing::TestRandom;
 
@@ -92,5 +92,5 @@ TEST(RasterRowSpans, RowsAndSpansHoldEveryCoveredPixel) {
               (unsigned long long)pixels);
 }
 
-}  // namespace
+}  // namespace test_raster_row_spans
 }  // namespace penumbra

@@ -10,7 +10,7 @@
 #include "test_reference_fixture.h"
 
 namespace penumbra {
-namespace {
+namespace test_reference_eye_pass {
 
 Scene finalized(std::vector<Mesh> meshes, const Light& light) {
   Scene scene;
@@ -121,5 +121,5 @@ TEST(ReferenceEyePass, InsideCornerHasNoSeam) {
   EXPECT_GT(covered, 40000);
 }
 
-}  // namespace
+}  // namespace test_reference_eye_pass
 }  // namespace penumbra

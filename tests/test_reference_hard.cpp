@@ -10,7 +10,7 @@
 #include "test_reference_fixture.h"
 
 namespace penumbra {
-namespace {
+namespace test_reference_hard {
 
 using reference_test::box;
 using reference_test::coveredPixels;
@@ -246,5 +246,5 @@ TEST(ReferenceHard, EmptySceneIsLit) {
   EXPECT_EQ(result.stats.rays, uint64_t(coveredPixels(eye)) * 64u);
 }
 
-}  // namespace
+}  // namespace test_reference_hard
 }  // namespace penumbra

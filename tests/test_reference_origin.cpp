@@ -7,7 +7,7 @@
 #include "test_reference_fixture.h"
 
 namespace penumbra {
-namespace {
+namespace test_reference_origin {
 
 // The closest point must be the plane projection inside the triangle, the edge point beyond an
 // edge and the vertex beyond a corner; otherwise ray origins would land off the surface.
@@ -96,5 +96,5 @@ TEST(ReferenceOrigin, KeptTriangleGivesTheSameOrigins) {
   EXPECT_EQ(differing, 0u);
 }
 
-}  // namespace
+}  // namespace test_reference_origin
 }  // namespace penumbra

@@ -8,7 +8,7 @@
 #include "shadows/reference/light_sampling.h"
 
 namespace penumbra {
-namespace {
+namespace test_reference_sampling {
 
 // The grid must multiply to n and be as square as n allows; otherwise samples would be lost
 // or strata needlessly elongated.
@@ -109,5 +109,5 @@ TEST(ReferenceSampling, TinyLightKeepsItsCone) {
   EXPECT_NEAR(glm::length(glm::cross(dvec3(rim.direction), dvec3(cone.axis))), 1e-9, 1e-12);
 }
 
-}  // namespace
+}  // namespace test_reference_sampling
 }  // namespace penumbra

@@ -11,7 +11,7 @@
 #include "test_reference_fixture.h"
 
 namespace penumbra {
-namespace {
+namespace test_reference_soft {
 
 using reference_test::coveredPixels;
 using reference_test::groundEyeBuffers;
@@ -214,5 +214,5 @@ TEST(ReferenceSoft, PointsInsideTheLightAreLit) {
   EXPECT_GE(result.stats.rays, uint64_t(outside_pixels) * 16u);
 }
 
-}  // namespace
+}  // namespace test_reference_soft
 }  // namespace penumbra

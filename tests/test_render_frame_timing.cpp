@@ -9,7 +9,7 @@
 #include "scene/builtin_scenes.h"
 
 namespace penumbra {
-namespace {
+namespace test_render_frame_timing {
 
 // N timed frames after the warm-up, every pass of the frame with a median, min <= median <= max;
 // the result holds a complete frame. If this failed, the warm timings would count the wrong
@@ -62,5 +62,5 @@ TEST_F(FrameTimingCli, RenderFramesPrintsWarmTimings) {
   EXPECT_NE(run("render spheres --frames 0 --quiet").exit_code, 0);
 }
 
-}  // namespace
+}  // namespace test_render_frame_timing
 }  // namespace penumbra

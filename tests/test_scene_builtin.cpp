@@ -11,7 +11,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_builtin {
 
 using test::contains;
 using test::errorMessage;
@@ -148,5 +148,5 @@ TEST(SceneBuiltin, EverySceneFileLoads) {
   }
 }
 
-}  // namespace
+}  // namespace test_scene_builtin
 }  // namespace penumbra

@@ -4,7 +4,7 @@
 #include "scene/generators.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_edges {
 
 Mesh meshOf(std::vector<vec3> positions, std::vector<uint32_t> indices) {
   Mesh mesh;
@@ -126,5 +126,5 @@ TEST(SceneEdges, TerrainGridCounts) {
   expectSignsMatchTriangles(terrain, adjacency);
 }
 
-}  // namespace
+}  // namespace test_scene_edges
 }  // namespace penumbra

@@ -7,7 +7,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_file {
 
 using test::contains;
 using test::errorMessage;
@@ -165,5 +165,5 @@ TEST(SceneFile, ModelsPrefixUsesTheModelsDirectory) {
       << message;
 }
 
-}  // namespace
+}  // namespace test_scene_file
 }  // namespace penumbra

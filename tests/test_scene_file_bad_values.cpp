@@ -13,7 +13,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_file_bad_values {
 
 using test::contains;
 using test::errorMessage;
@@ -146,5 +146,5 @@ TEST(SceneFileBadValues, ModelsPrefixCannotLeaveTheModelsFolder) {
   }
 }
 
-}  // namespace
+}  // namespace test_scene_file_bad_values
 }  // namespace penumbra

@@ -7,7 +7,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_finalize {
 
 using test::contains;
 using test::errorMessage;
@@ -84,5 +84,5 @@ TEST(SceneFinalize, RejectsUnrenderableScenes) {
   EXPECT_TRUE(contains(message, "references vertex 100")) << message;
 }
 
-}  // namespace
+}  // namespace test_scene_finalize
 }  // namespace penumbra

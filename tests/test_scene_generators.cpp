@@ -12,7 +12,7 @@
 #include "scene/teapot.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_generators {
 
 // Sum of |height| over the 25 vertices of makeFractalTerrain(2, 1, 0.5, 1), recorded when the
 // generator was written.
@@ -156,5 +156,5 @@ TEST(SceneGenerators, RejectsBadParameters) {
   EXPECT_THROW(makeTorus(vec3(0), 0.1f, 0.2f), Error);
 }
 
-}  // namespace
+}  // namespace test_scene_generators
 }  // namespace penumbra

@@ -15,7 +15,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_hostile_mesh_files {
 
 using test::contains;
 using test::errorMessage;
@@ -242,5 +242,5 @@ TEST(SceneHostileMeshFiles, GltfThatIsNotJsonIsRefusedBeforeAssimp) {
                        "bare.gltf: not a glTF file: asset: missing"));
 }
 
-}  // namespace
+}  // namespace test_scene_hostile_mesh_files
 }  // namespace penumbra

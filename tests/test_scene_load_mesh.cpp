@@ -12,7 +12,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_load_mesh {
 
 using test::contains;
 using test::errorMessage;
@@ -108,5 +108,5 @@ TEST(SceneLoadMesh, SharedModelsMatchTheManifest) {
   }
 }
 
-}  // namespace
+}  // namespace test_scene_load_mesh
 }  // namespace penumbra

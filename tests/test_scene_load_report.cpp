@@ -14,7 +14,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_load_report {
 
 using test::contains;
 using test::errorMessage;
@@ -155,5 +155,5 @@ TEST(MeshReport, CountsWhatTheLoaderDid) {
             "edges, 1 degenerate triangles dropped, 2 components");
 }
 
-}  // namespace
+}  // namespace test_scene_load_report
 }  // namespace penumbra

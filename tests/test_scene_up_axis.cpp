@@ -8,7 +8,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_up_axis {
 
 using test::contains;
 using test::errorMessage;
@@ -57,5 +57,5 @@ TEST(UpAxis, SceneFileAndMeshFileStandZUpMeshesUp) {
                        "applies to a mesh file"));
 }
 
-}  // namespace
+}  // namespace test_scene_up_axis
 }  // namespace penumbra

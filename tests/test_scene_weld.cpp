@@ -6,7 +6,7 @@
 #include "scene/weld.h"
 
 namespace penumbra {
-namespace {
+namespace test_scene_weld {
 
 // If -0.0 and +0.0 were kept apart, a mesh authored with mirrored halves (x = -0 on one side,
 // +0 on the other) would get a crack of open edges along its seam and shadow volumes would leak.
@@ -79,5 +79,5 @@ TEST(SceneWeld, RejectsOutOfRangeIndices) {
   }
 }
 
-}  // namespace
+}  // namespace test_scene_weld
 }  // namespace penumbra

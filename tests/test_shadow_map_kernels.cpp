@@ -14,7 +14,7 @@
 #include "shadows/shadowmap/map_lookup_kernel.h"
 
 namespace penumbra {
-namespace {
+namespace test_shadow_map_kernels {
 
 constexpr int kSize = 32;
 constexpr double kNear = 0.01;
@@ -148,5 +148,5 @@ TEST(ShadowMapKernels, TabledSpiralTurnsLikeTheDirectFormula) {
   }
 }
 
-}  // namespace
+}  // namespace test_shadow_map_kernels
 }  // namespace penumbra

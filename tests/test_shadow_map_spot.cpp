@@ -14,7 +14,7 @@
 #include "shadows/technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_shadow_map_spot {
 
 using Frame = testing::EyeFrame;
 
@@ -162,5 +162,5 @@ TEST(ShadowMapSpot, InconsistentOptionsAreRefused) {
   EXPECT_NO_THROW(fine.validate());
 }
 
-}  // namespace
+}  // namespace test_shadow_map_spot
 }  // namespace penumbra

@@ -14,7 +14,7 @@
 #include "shadows/volume/shadow_stencil.h"
 
 namespace penumbra {
-namespace {
+namespace test_shadow_stencil_own_quads {
 
 // Pixels showing a triangle of mesh `checked_mesh` with the eye and the light centre strictly on
 // the same side of its plane whose stencil is not 0, with and without skipping the own quads.
@@ -78,5 +78,5 @@ TEST(ShadowStencilOwnQuads, LoneFloorCountsNothingUpToItsBorder) {
   EXPECT_EQ(m.with_skip, 0);
 }
 
-}  // namespace
+}  // namespace test_shadow_stencil_own_quads
 }  // namespace penumbra

@@ -12,7 +12,7 @@
 #include "open_mesh_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_silhouette_casters {
 
 using testing::openSphere;
 
@@ -66,5 +66,5 @@ TEST(SilhouetteCasters, WindingNumberOfClosedSphere) {
   EXPECT_TRUE(insideClosedMesh(sphere, dvec3(0.1, 0.2, -0.3)));
 }
 
-}  // namespace
+}  // namespace test_silhouette_casters
 }  // namespace penumbra

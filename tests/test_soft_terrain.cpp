@@ -19,7 +19,7 @@
 #include "shadows/technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_soft_terrain {
 
 // The ellipsoid: the unit sphere scaled by kEllipsoidScale and moved to kEllipsoidCentre.
 const vec3 kEllipsoidScale(1.8f, 0.45f, 1.4f);
@@ -160,5 +160,5 @@ TEST(SoftShadowTerrain, RaysThroughAnOpenMeshsBorderStayDark) {
   }
 }
 
-}  // namespace
+}  // namespace test_soft_terrain
 }  // namespace penumbra

@@ -12,7 +12,7 @@
 #include "evaluation/sweep_report.h"
 
 namespace penumbra {
-namespace {
+namespace test_sweep {
 
 SweepOptions tinySweep() {
   SweepOptions o;
@@ -183,5 +183,5 @@ TEST(Sweep, RejectsBadOptions) {
   EXPECT_THROW(runSweep(o), Error);
 }
 
-}  // namespace
+}  // namespace test_sweep
 }  // namespace penumbra

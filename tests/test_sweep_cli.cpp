@@ -12,7 +12,7 @@
 #include "render/image_io.h"
 
 namespace penumbra {
-namespace {
+namespace test_sweep_cli {
 
 namespace fs = std::filesystem;
 
@@ -76,5 +76,5 @@ TEST_F(SweepCli, RenderTakesCullingOptions) {
   EXPECT_EQ(run("render columns --technique wedge-3pass --cull sometimes --quiet"), 1);
 }
 
-}  // namespace
+}  // namespace test_sweep_cli
 }  // namespace penumbra

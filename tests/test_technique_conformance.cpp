@@ -25,7 +25,7 @@
 #include "shadows/technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_technique_conformance {
 
 // A technique this test binary brings: every point lit that faces the light. Its one
 // registration below is all it takes to be run through the whole suite (the instantiation at
@@ -435,5 +435,5 @@ TEST(TechniqueConformanceSuite, RegisteredTestTechniqueIsRunAndCanFail) {
   EXPECT_THROW(registerTechnique(allLitTechnique()), Error);  // a name is registered once
 }
 
-}  // namespace
+}  // namespace test_technique_conformance
 }  // namespace penumbra

@@ -4,7 +4,7 @@
 #include "core/view.h"
 
 namespace penumbra {
-namespace {
+namespace test_view {
 
 // If the projection or unprojection disagreed, every technique would shade the wrong points.
 TEST(View, UnprojectInvertsProjectionAtPixelCentres) {
@@ -40,5 +40,5 @@ TEST(View, RejectsDegenerateCameras) {
   EXPECT_THROW(View::lookAt(10, 10, vec3(NAN), vec3(0, 0, -1), vec3(0, 1, 0), 45, 0.1f), Error);
 }
 
-}  // namespace
+}  // namespace test_view
 }  // namespace penumbra

@@ -8,7 +8,7 @@
 #include "shadows/volume/volume_technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_volume_invariance {
 
 struct VolumeRun {
   Image<float> visibility;
@@ -49,5 +49,5 @@ TEST(ShadowVolumeInvariance, ThreadsAndSimdDoNotChangeImagesOrCounters) {
   }
 }
 
-}  // namespace
+}  // namespace test_volume_invariance
 }  // namespace penumbra

@@ -13,7 +13,7 @@
 #include "shadows/volume/volume_technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_volume_oracle {
 
 using testing::compareHardWithOracle;
 using testing::sphereOverGround;
@@ -141,5 +141,5 @@ TEST(ShadowVolumeOracle, OpenNonManifoldAndInconsistentCasters) {
   }
 }
 
-}  // namespace
+}  // namespace test_volume_oracle
 }  // namespace penumbra

@@ -15,7 +15,7 @@
 #include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
-namespace {
+namespace test_wedge_edge_on {
 
 // The quad x in [-0.5, 0.5], y in [0.25, 1.25] in the plane z = 0 (coordinates exact in float), the
 // light centre (0, 2.5, 0) in that plane, a floor at y = 0. `tilt`: the top edge moved to z = tilt,
@@ -102,5 +102,5 @@ TEST(WedgeEdgeOn, QuadEdgeOnToLightCentreCastsBothPenumbraLines) {
   }
 }
 
-}  // namespace
+}  // namespace test_wedge_edge_on
 }  // namespace penumbra

@@ -12,7 +12,7 @@
 #include "shadows/wedge/wedge.h"
 
 namespace penumbra {
-namespace {
+namespace test_wedge_geometry {
 
 struct Built {
   Mesh mesh;
@@ -469,5 +469,5 @@ TEST(WedgeGeometry, RejectsBadInput) {
                Error);
 }
 
-}  // namespace
+}  // namespace test_wedge_geometry
 }  // namespace penumbra

@@ -12,7 +12,7 @@
 #include "shadows/wedge/wedge.h"
 
 namespace penumbra {
-namespace {
+namespace test_wedge_geometry_degenerate {
 
 struct Built {
   Mesh mesh;
@@ -563,5 +563,5 @@ TEST(WedgeGeometryDegenerate, RandomSoupsStaySane) {
   }
 }
 
-}  // namespace
+}  // namespace test_wedge_geometry_degenerate
 }  // namespace penumbra

@@ -23,7 +23,7 @@
 #include "shadow_test_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_wedge_technique {
 
 constexpr WedgeAlgorithm kWedgeKinds[] = {WedgeAlgorithm::Original2002, WedgeAlgorithm::ThreePass,
                                            WedgeAlgorithm::SinglePass};
@@ -318,5 +318,5 @@ TEST(WedgeTechnique, RasterizedWedgesCoverExactlyThePointsInsideThem) {
   }
 }
 
-}  // namespace
+}  // namespace test_wedge_technique
 }  // namespace penumbra

@@ -27,7 +27,7 @@
 #include "shadow_test_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_wedge_technique_oracle {
 
 constexpr WedgeAlgorithm kWedgeKinds[] = {WedgeAlgorithm::Original2002, WedgeAlgorithm::ThreePass,
                                            WedgeAlgorithm::SinglePass};
@@ -444,5 +444,5 @@ TEST(WedgeOracle, SharedModelScenesRenderWithoutLightLeaks) {
   }
 }
 
-}  // namespace
+}  // namespace test_wedge_technique_oracle
 }  // namespace penumbra

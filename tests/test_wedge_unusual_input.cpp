@@ -17,7 +17,7 @@
 #include "test_scene_util.h"
 
 namespace penumbra {
-namespace {
+namespace test_wedge_unusual_input {
 
 const char* const kWedgeTechniques[] = {"wedge-2002", "wedge-3pass", "wedge-1pass"};
 
@@ -139,11 +139,11 @@ TEST(WedgeUnusualInput, EveryTriangleDoubledRendersAsTheSingleMesh) {
   }
 }
 
-}  // namespace
+}  // namespace test_wedge_unusual_input
 }  // namespace penumbra
 
 namespace penumbra {
-namespace {
+namespace test_wedge_unusual_input {
 
 // A light whose radius reaches a silhouette edge has no wedge planes there (they must touch the
 // sphere from outside, 2002 paper, section 4.1): every wedge technique refuses the frame and
@@ -192,5 +192,5 @@ TEST(WedgeUnusualInput, SceneReaderRefusesAbsurdLightRadii) {
   EXPECT_EQ(parse("[0, 1e6, 0]", "5000").lights.at(0).radius, 5000.0f);
 }
 
-}  // namespace
+}  // namespace test_wedge_unusual_input
 }  // namespace penumbra

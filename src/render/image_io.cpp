@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/path_extension.h"
 #include "render/output_file.h"
 
 namespace penumbra {
@@ -139,12 +140,6 @@ std::vector<uint8_t> readPng8(const std::string& path, uint32_t format, int& wid
   height = int(image.height);
   png_image_free(&image);
   return bytes;
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
 }
 
 // Frees tinyexr's allocations on every path out of readExr.

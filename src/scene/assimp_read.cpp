@@ -9,18 +9,12 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/path_extension.h"
 #include "scene/glb_check.h"
 #include "scene/ply_check.h"
 
 namespace penumbra {
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 std::string readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.h"
 
 namespace penumbra {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 vec3 LightTexture::at(vec2 st) const {
@@ -103,7 +103,7 @@ double lightArea(const Light& light) {
   switch (light.shape) {
     case LightShape::Sphere:
     case LightShape::Disk:
-      return kPi * double(light.radius) * double(light.radius);
+      return std::numbers::pi * double(light.radius) * double(light.radius);
     case LightShape::Rectangle:
       return glm::length(glm::cross(dvec3(light.edge_u), dvec3(light.edge_v)));
   }
@@ -143,7 +143,7 @@ void checkLightShape(const Light& light) {
                      lv);
       PENUMBRA_CHECK(std::abs(glm::dot(u, v)) <= 1e-4 * lu * lv,
                      "rectangle light edges are not orthogonal (angle {:.4f} degrees)",
-                     std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0, 1.0)) * 180.0 / kPi);
+                     std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0, 1.0)) * 180.0 / std::numbers::pi);
       const double half_diagonal = 0.5 * glm::length(u + v);
       PENUMBRA_CHECK(std::abs(double(light.radius) - half_diagonal) <= 1e-5 * half_diagonal,
                      "rectangle light radius {} is not half its diagonal {} (use rectangleLight)",

@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "core/error.h"
+#include "core/path_extension.h"
 #include "scene/builtin_scenes.h"
 #include "scene/generators.h"
 #include "scene/load_mesh.h"
@@ -22,12 +23,6 @@ namespace fs = std::filesystem;
 
 // The mesh is normalised to this many units along its largest extent.
 constexpr float kMeshSize = 2.0f;
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 }  // namespace
 

@@ -20,6 +20,10 @@ using glm::vec2;
 using glm::vec3;
 using glm::vec4;
 
+// The z component of the cross product of two plane vectors: twice the signed area of the
+// triangle they span, positive when b turns counter-clockwise from a.
+inline double cross2(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
+
 inline bool isFinite(const vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }

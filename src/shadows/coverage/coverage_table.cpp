@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.h"
 #include "core/parallel.h"
 
 namespace penumbra {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 CoverageTableData::CoverageTableData(LightOutline outline, int n) : outline_(outline), n_(n) {
@@ -27,7 +27,7 @@ CoverageTableData::CoverageTableData(LightOutline outline, int n) : outline_(out
       float* out = values_.data() + i0 * n1 * n1;
       for (int i1 = 0; i1 < n; ++i1) {
         for (int k = 0; k < n; ++k) {
-          const double r1 = double(i1) / last, dtheta = kPi * (2.0 * double(k) / last - 1.0);
+          const double r1 = double(i1) / last, dtheta = std::numbers::pi * (2.0 * double(k) / last - 1.0);
           *out++ = float(insideFraction(outline_, q0, r1 * dvec2(std::cos(dtheta), std::sin(dtheta))));
         }
       }
@@ -59,7 +59,7 @@ float CoverageTableData::lookupInside(const dvec2& lo, const dvec2& hi,
     const double dtheta = std::atan2(lo.x * hi.y - lo.y * hi.x, glm::dot(lo, hi));
     coords[0] = std::min(1.0, glm::length(lo)) * last;
     coords[1] = std::min(1.0, glm::length(hi)) * last;
-    coords[2] = std::clamp((dtheta + kPi) / (2.0 * kPi), 0.0, 1.0) * last;
+    coords[2] = std::clamp((dtheta + std::numbers::pi) / (2.0 * std::numbers::pi), 0.0, 1.0) * last;
     dims = 3;
   } else {
     const double c[4] = {lo.x, lo.y, hi.x, hi.y};

@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "shadows/coverage/disk_coverage_kernel.h"
 
 namespace penumbra {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
 
 // Area of the square [-1, 1]^2 inside the cone from the origin between directions lo and hi
 // (counter-clockwise from lo to hi, less than pi apart): the square clipped by the two
@@ -23,7 +20,7 @@ double squareConeArea(const dvec2& lo, const dvec2& hi) {
     int n = 0;
     for (int i = 0; i < count; ++i) {
       const dvec2 p = poly[i], q = poly[(i + 1) % count];
-      const double fp = sign * cross(dir, p), fq = sign * cross(dir, q);
+      const double fp = sign * cross2(dir, p), fq = sign * cross2(dir, q);
       if (fp >= 0.0) out[n++] = p;
       if ((fp >= 0.0) != (fq >= 0.0)) out[n++] = p + (q - p) * (fp / (fp - fq));
     }
@@ -33,7 +30,7 @@ double squareConeArea(const dvec2& lo, const dvec2& hi) {
   clip(lo, 1.0);   // left of lo
   clip(hi, -1.0);  // right of hi
   double area = 0.0;
-  for (int i = 0; i < count; ++i) area += cross(poly[i], poly[(i + 1) % count]);
+  for (int i = 0; i < count; ++i) area += cross2(poly[i], poly[(i + 1) % count]);
   return 0.5 * area;
 }
 
@@ -57,7 +54,7 @@ struct Polygon {
   }
   double area() const {
     double a = 0.0;
-    for (int i = 0; i < count; ++i) a += cross(v[i], v[(i + 1) % count]);
+    for (int i = 0; i < count; ++i) a += cross2(v[i], v[(i + 1) % count]);
     return 0.5 * a;
   }
 };
@@ -82,9 +79,9 @@ double originTriangleInUnitDisk(const dvec2& p, const dvec2& q) {
     const dvec2 u = p + t[i] * d, w = p + t[i + 1] * d;
     const dvec2 mid = 0.5 * (u + w);
     if (glm::dot(mid, mid) <= 1.0) {
-      area += 0.5 * cross(u, w);
+      area += 0.5 * cross2(u, w);
     } else {
-      area += 0.5 * std::atan2(cross(u, w), glm::dot(u, w));
+      area += 0.5 * std::atan2(cross2(u, w), glm::dot(u, w));
     }
   }
   return area;
@@ -94,7 +91,7 @@ double originTriangleInUnitDisk(const dvec2& p, const dvec2& q) {
 
 double insideFractionInHalfPlane(LightOutline outline, const dvec2& lo, const dvec2& hi,
                                  const dvec2& n, double offset) {
-  const double turn = cross(lo, hi);
+  const double turn = cross2(lo, hi);
   if (turn == 0.0) return 0.0;
   const dvec2 a = turn > 0.0 ? lo : hi, b = turn > 0.0 ? hi : lo;
   // The cone from the centre between a and b (less than pi wide: the segment misses the
@@ -123,19 +120,19 @@ double insideFractionInHalfPlane(LightOutline outline, const dvec2& lo, const dv
   triangle.v[2] = b;
   triangle.clip(n, offset);
   const double area =
-      (cone_area - triangle.area()) / (outline == LightOutline::Disk ? kPi : 4.0);
+      (cone_area - triangle.area()) / (outline == LightOutline::Disk ? std::numbers::pi : 4.0);
   return turn > 0.0 ? area : -area;
 }
 
 double insideFraction(LightOutline outline, const dvec2& lo, const dvec2& hi) {
-  const double turn = cross(lo, hi);
+  const double turn = cross2(lo, hi);
   if (turn == 0.0) return 0.0;  // through the centre, or a point: the quad's plane itself
   const dvec2 a = turn > 0.0 ? lo : hi, b = turn > 0.0 ? hi : lo;
   const double triangle = 0.5 * std::fabs(turn);
   double area;
   if (outline == LightOutline::Disk) {
-    area = 0.5 * std::atan2(cross(a, b), glm::dot(a, b)) - triangle;
-    area /= kPi;
+    area = 0.5 * std::atan2(cross2(a, b), glm::dot(a, b)) - triangle;
+    area /= std::numbers::pi;
   } else {
     area = (squareConeArea(a, b) - triangle) / 4.0;
   }
@@ -199,7 +196,7 @@ double halfPlaneFraction(LightOutline outline, const dvec2& n, double offset) {
     const double d = std::clamp(offset / length, -1.0, 1.0);
     const double h = std::fabs(d);
     const double segment = std::acos(h) - h * std::sqrt(std::max(0.0, 1.0 - h * h));
-    return d >= 0.0 ? 1.0 - segment / kPi : segment / kPi;
+    return d >= 0.0 ? 1.0 - segment / std::numbers::pi : segment / std::numbers::pi;
   }
   dvec2 poly[8] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   dvec2 out[8];
@@ -211,7 +208,7 @@ double halfPlaneFraction(LightOutline outline, const dvec2& n, double offset) {
     if ((fp > 0.0) != (fq > 0.0)) out[count++] = p + (q - p) * (fp / (fp - fq));
   }
   double area = 0.0;
-  for (int i = 0; i < count; ++i) area += cross(out[i], out[(i + 1) % count]);
+  for (int i = 0; i < count; ++i) area += cross2(out[i], out[(i + 1) % count]);
   return 0.5 * area / 4.0;
 }
 

@@ -106,13 +106,11 @@ SmallPolygon square() {
   return s;
 }
 
-inline double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
-
 }  // namespace
 
 dvec3 TexturedSquare::beyondFraction(dvec2 lo, dvec2 hi, bool flip_y, bool half_plane,
                                      dvec2 slope, double offset) const {
-  const double turn = cross(lo, hi);
+  const double turn = cross2(lo, hi);
   if (turn == 0.0) return dvec3(0.0);  // a point, or a line through the centre
   if (flip_y) {
     lo.y = -lo.y;
@@ -120,7 +118,7 @@ dvec3 TexturedSquare::beyondFraction(dvec2 lo, dvec2 hi, bool flip_y, bool half_
     slope.y = -slope.y;
   }
   // Counter-clockwise in the texture's own orientation.
-  const bool ccw = cross(lo, hi) > 0.0;
+  const bool ccw = cross2(lo, hi) > 0.0;
   const dvec2 a = ccw ? lo : hi, b = ccw ? hi : lo;
   SmallPolygon one, two;
   clipSmallPolygon(square(), dvec2(-a.y, a.x), 0.0, one);  // a x X >= 0

@@ -8,7 +8,7 @@
 namespace penumbra {
 namespace {
 
-constexpr size_t kChunk = 2048;  // edges per work item
+constexpr size_t kEdgesPerItem = 2048;  // edges per work item
 
 // Relative slack of the "plane cuts the ball" and "silhouette from the centre" tests: an edge
 // kept needlessly costs a little time, an edge missed is a wrong pixel.
@@ -46,9 +46,9 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
     out.scene_edges += adjacency.edges.size();
     // Planes of the mesh's triangles, once (an edge asks for two of them).
     std::vector<dvec4> planes(mesh.triangleCount());
-    parallelFor((mesh.triangleCount() + kChunk - 1) / kChunk, [&](size_t chunk) {
-      const size_t end = std::min(mesh.triangleCount(), (chunk + 1) * kChunk);
-      for (size_t t = chunk * kChunk; t < end; ++t) {
+    parallelFor((mesh.triangleCount() + kEdgesPerItem - 1) / kEdgesPerItem, [&](size_t chunk) {
+      const size_t end = std::min(mesh.triangleCount(), (chunk + 1) * kEdgesPerItem);
+      for (size_t t = chunk * kEdgesPerItem; t < end; ++t) {
         const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), v(mesh.vertex(t, 2));
         const dvec3 n = glm::cross(b - a, v - a);
         const double length = glm::length(n);
@@ -78,12 +78,12 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
       }
     }
     const size_t edge_count = adjacency.edges.size();
-    const size_t chunks = (edge_count + kChunk - 1) / kChunk;
+    const size_t chunks = (edge_count + kEdgesPerItem - 1) / kEdgesPerItem;
     std::vector<PotentialEdges> parts(chunks);
     parallelFor(chunks, [&](size_t chunk) {
       PotentialEdges& part = parts[chunk];
-      const size_t end = std::min(edge_count, (chunk + 1) * kChunk);
-      for (size_t i = chunk * kChunk; i < end; ++i) {
+      const size_t end = std::min(edge_count, (chunk + 1) * kEdgesPerItem);
+      for (size_t i = chunk * kEdgesPerItem; i < end; ++i) {
         const Edge& edge = adjacency.edges[i];
         const dvec3 a(mesh.positions[edge.v0]), b(mesh.positions[edge.v1]);
         const size_t first = part.triangles.size();

@@ -23,7 +23,7 @@
 namespace penumbra {
 namespace {
 
-constexpr int kMinSamples = 4, kMaxSamples = 1024;
+constexpr int kMinLightPoints = 4, kMaxLightPoints = 1024;
 
 class HeckbertHerf final : public PreparedTechnique {
  public:
@@ -122,7 +122,7 @@ TechniqueInfo heckbertHerfTechnique() {
   info.options =
       OptionTableBuilder<HeckbertHerfOptions>()
           .integer("samples", "hard shadow renders averaged, one per stratified light point",
-                   &HeckbertHerfOptions::samples, kMinSamples, kMaxSamples)
+                   &HeckbertHerfOptions::samples, kMinLightPoints, kMaxLightPoints)
           .integer("seed", "random seed of the jitter inside the light's strata",
                    &HeckbertHerfOptions::seed, 0, INT64_MAX)
           .describe([](const HeckbertHerfOptions& o) {

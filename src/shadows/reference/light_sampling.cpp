@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.h"
 #include "scene/light.h"
 
 namespace penumbra {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 uint64_t splitMix64(uint64_t& state) {
   uint64_t z = (state += 0x9e3779b97f4a7c15ull);
@@ -41,7 +40,7 @@ PixelRandom::PixelRandom(uint64_t seed, uint32_t x, uint32_t y) {
 double PixelRandom::next() { return double(splitMix64(state_) >> 11) * 0x1.0p-53; }
 
 DiskPoint concentricDisk(vec2 u) {
-  constexpr float kQuarterPi = float(kPi / 4.0);
+  constexpr float kQuarterPi = float(std::numbers::pi / 4.0);
   const float a = 2.0f * u.x - 1.0f;
   const float b = 2.0f * u.y - 1.0f;
   if (a == 0.0f && b == 0.0f) return DiskPoint{0.0f, 1.0f, 0.0f};

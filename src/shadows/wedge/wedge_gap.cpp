@@ -2,12 +2,11 @@
 
 #include <cmath>
 
+#include "shadows/wedge/wedge_sides.h"
+
 namespace penumbra::wedge_detail {
 namespace {
 
-// Below this sine two rays (or two plane normals) count as parallel: the plane through them
-// would be rounding noise.
-constexpr double kParallelSin = 1e-9;
 // A front ray must enter the other wedge's notch side at least this fraction of the fan's
 // opening angle (the sine between the two front rays): closer, the notch is rounding noise and
 // the cone would be degenerate.

@@ -9,9 +9,6 @@
 namespace penumbra::wedge_detail {
 namespace {
 
-// Two unit normals whose cross product is shorter than this are treated as parallel planes:
-// below it the intersection direction is rounding noise (normals carry ~1e-16 of error).
-constexpr double kParallelSin = 1e-9;
 // Figure 6 cut: the bottom plane is placed this far from the edge toward the first crossing
 // (as a fraction of the axial distance), late enough to keep most of the wedge, early enough
 // that the bottom face does not collapse to the crossing point.

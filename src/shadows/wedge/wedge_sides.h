@@ -11,6 +11,11 @@
 
 namespace penumbra::wedge_detail {
 
+// Two unit vectors (rays, plane normals) whose cross product is shorter than this count as
+// parallel: the plane through them, or the line where they meet, would be rounding noise
+// (normals carry ~1e-16 of error).
+inline constexpr double kParallelSin = 1e-9;
+
 struct EdgePlanes {
   Plane front, back;  // inward: the wedge lies on the positive side of both
 };
