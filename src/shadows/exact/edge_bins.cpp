@@ -25,7 +25,10 @@ struct NdcBox {
   bool empty() const { return x0 > x1; }
 };
 
-constexpr size_t kChunk = 2048;  // items per work item
+// Items per work item: at most kChunk, and a 64th of the items down to kMinChunk, so that a
+// frame with a few hundred edges (`columns`' silhouette) still spreads over the threads. The
+// lists do not depend on it: chunks are merged in order, then counting-sorted by tile.
+constexpr size_t kChunk = 2048, kMinChunk = 16;
 
 // A world plane as a function of screen position and reversed-Z depth, E = value / w
 // (wedge_screen.h, toScreenPlane), in double.
@@ -427,12 +430,13 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   // item order within a tile: chunks in order, then a counting sort by tile).
   auto binAll = [&](size_t count, const auto& regionOf, std::vector<uint32_t>& begin,
                     std::vector<uint32_t>& items) {
-    const size_t chunks = (count + kChunk - 1) / kChunk;
+    const size_t chunk_size = std::clamp(count / 64, kMinChunk, kChunk);
+    const size_t chunks = (count + chunk_size - 1) / chunk_size;
     std::vector<Part> parts(chunks);
     parallelFor(chunks, [&](size_t chunk) {
       Part& part = parts[chunk];
-      const size_t end = std::min(count, (chunk + 1) * kChunk);
-      for (size_t i = chunk * kChunk; i < end; ++i) {
+      const size_t end = std::min(count, (chunk + 1) * chunk_size);
+      for (size_t i = chunk * chunk_size; i < end; ++i) {
         const Region region = regionOf(i);
         // A quadtree over the culling tiles, from tiles 8x8 times larger down: a shadow's
         // streak toward its vanishing point crosses a screen box that is mostly empty for it.
