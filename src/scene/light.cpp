@@ -143,7 +143,8 @@ void checkLightShape(const Light& light) {
                      lv);
       PENUMBRA_CHECK(std::abs(glm::dot(u, v)) <= 1e-4 * lu * lv,
                      "rectangle light edges are not orthogonal (angle {:.4f} degrees)",
-                     std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0, 1.0)) * 180.0 / std::numbers::pi);
+                     std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0, 1.0)) * 180.0 /
+                         std::numbers::pi);
       const double half_diagonal = 0.5 * glm::length(u + v);
       PENUMBRA_CHECK(std::abs(double(light.radius) - half_diagonal) <= 1e-5 * half_diagonal,
                      "rectangle light radius {} is not half its diagonal {} (use rectangleLight)",

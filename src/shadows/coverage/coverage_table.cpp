@@ -27,7 +27,8 @@ CoverageTableData::CoverageTableData(LightOutline outline, int n) : outline_(out
       float* out = values_.data() + i0 * n1 * n1;
       for (int i1 = 0; i1 < n; ++i1) {
         for (int k = 0; k < n; ++k) {
-          const double r1 = double(i1) / last, dtheta = std::numbers::pi * (2.0 * double(k) / last - 1.0);
+          const double r1 = double(i1) / last;
+          const double dtheta = std::numbers::pi * (2.0 * double(k) / last - 1.0);
           *out++ = float(insideFraction(outline_, q0, r1 * dvec2(std::cos(dtheta), std::sin(dtheta))));
         }
       }
