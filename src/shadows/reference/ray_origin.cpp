@@ -117,8 +117,10 @@ void RayOrigins::deriveTriangle(uint32_t primitive, OriginTriangle& t) const {
   t.winding_normal = glm::cross(t.b - t.a, t.c - t.a);
   t.eye_side = glm::dot(t.winding_normal, dvec3(view_.eye) - t.a);
   t.length = glm::length(t.winding_normal);
-  t.extent = std::max({glm::length(t.b - t.a), glm::length(t.c - t.a), glm::length(t.c - t.b)});
-  t.perimeter = glm::length(t.b - t.a) + glm::length(t.c - t.b) + glm::length(t.a - t.c);
+  const double ab = glm::length(t.b - t.a), bc = glm::length(t.c - t.b);
+  const double ca = glm::length(t.a - t.c);
+  t.extent = std::max({ab, ca, bc});
+  t.perimeter = ab + bc + ca;
   const dvec3 corners[3] = {t.a, t.b, t.c};
   for (int i = 0; i < 3; ++i) {
     // In-plane normal of edge i -> i + 1, pointing into the triangle (the vertices are

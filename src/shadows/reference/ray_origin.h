@@ -67,10 +67,10 @@ class RayOrigins {
   void checkPrimitiveIds(const Image<uint32_t>& ids) const;
 
  private:
-  const Scene& scene_;
-  const View& view_;
   void deriveTriangle(uint32_t primitive, OriginTriangle& triangle) const;
 
+  const Scene& scene_;
+  const View& view_;
   double pixel_angle_;             // radians per pixel at the image centre
   std::vector<uint64_t> offsets_;  // first global id of every mesh, then the total
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -34,7 +35,7 @@ SceneTriangles::SceneTriangles(const Scene& scene) {
 MapPoint LightDepthMaps::project(const dvec3& p) const {
   MapPoint m;
   if (frustums.cube()) {
-    const dvec3 d = p - dvec3(views[0].eye);
+    const dvec3 d = p - centre;
     const dvec3 a = glm::abs(d);
     if (a.x >= a.y && a.x >= a.z)
       m.face = d.x >= 0.0 ? 0 : 1;
@@ -71,13 +72,14 @@ LightDepthMaps drawLightDepthMaps(const Scene& scene, const SceneTriangles& tria
   }
   const float near_plane = far > 0.0 ? float(far * kNearFraction) : 1.0f;
   maps.near = double(near_plane);
+  maps.centre = centre;
 
   std::vector<vec4> clip(triangles.vertex_count);
   ClipTriangles tris = triangles.triangles;
   Image<uint32_t> ids;  // rasterizeDepth's primitive ids, not needed here
   ids.resizeForOverwrite(size, size);
   for (const LightFace& face : frustums.faces) {
-    const float fov = float(2.0 * std::atan(face.tan_half) * 180.0 / 3.14159265358979323846);
+    const float fov = float(2.0 * std::atan(face.tan_half) * 180.0 / std::numbers::pi);
     // The target as far from the light as the scene reaches: lookAt's direction is the float
     // difference target - centre, which one unit away from a light 1e4 units out would be off
     // by some 1e-3 radians, more than a spot fitted around a distant scene spans.
@@ -103,7 +105,6 @@ LightDepthMaps drawLightDepthMaps(const Scene& scene, const SceneTriangles& tria
     Image<float>& depth = maps.depth.emplace_back();
     depth.resizeForOverwrite(size, size);
     rasterizeDepth(tris, depth, ids, stats, simd);
-    maps.views.push_back(view);
     maps.matrices.push_back(view_projection);
     // The projection's own scale (rounded to float), so texel sizes match what was drawn.
     maps.tan_half.push_back(1.0 / double(view.projection[1][1]));

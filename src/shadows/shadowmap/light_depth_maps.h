@@ -33,8 +33,8 @@ struct MapPoint {
 
 struct LightDepthMaps {
   LightFrustums frustums;
-  std::vector<View> views;           // one per face
-  std::vector<dmat4> matrices;       // their view_projection, in double
+  dvec3 centre{0.0};                 // the light centre, which every face looks from
+  std::vector<dmat4> matrices;       // per face: the view-projection it was drawn with (double)
   std::vector<double> tan_half;      // the tangent of each face's half angle, as projected
   std::vector<Image<float>> depth;   // per face: near / distance of the nearest occluder, 0: none
   int size = 0;                      // texels along each side of each face
