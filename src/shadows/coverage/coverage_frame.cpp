@@ -28,13 +28,15 @@ bool coverageFrame(const Light& light, const dvec3& p, CoverageFrame& f) {
   if (light.shape == LightShape::Sphere) {
     const double d = glm::length(to_light), r = light.radius;
     if (!(d > r * (1.0 + 1e-6))) return false;
-    f.n = to_light / d;
+    // One division for n and the depth, and the disk's scale beside it (not after it): the
+    // frame is set up for every pixel an edge reaches, and its latency is that chain's.
+    f.inv_depth = 1.0 / d;
+    f.n = to_light * f.inv_depth;
     planeBasis(f.n, f.t, f.b);
     if (glm::dot(glm::cross(f.t, f.b), f.n) < 0.0) f.b = -f.b;
-    f.inv_depth = 1.0 / d;
     f.offset_t = f.offset_b = 0.0;
-    const double radius = r * d / std::sqrt((d - r) * (d + r));
-    f.scale_t = f.scale_b = 1.0 / radius;
+    // 1 / the disk's radius r d / sqrt(D^2 - r^2).
+    f.scale_t = f.scale_b = std::sqrt((d - r) * (d + r)) / (r * d);
     f.outline = LightOutline::Disk;
   } else {
     dvec3 normal, t, b;

@@ -101,20 +101,20 @@ struct PairBatch {
   std::vector<int32_t> weight;
   std::vector<uint8_t> pixel;
   size_t size() const { return pixel.size(); }
-  void clear() {
-    for (auto* v : {&x0, &y0, &w0, &x1, &y1, &w1}) v->clear();
-    weight.clear();
-    pixel.clear();
+  void resize(size_t n) {
+    for (auto* v : {&x0, &y0, &w0, &x1, &y1, &w1, &fraction}) v->resize(n);
+    weight.resize(n);
+    pixel.resize(n);
   }
-  void add(const dvec3& a, const dvec3& b, int32_t w, int i) {
-    x0.push_back(float(a.x));
-    y0.push_back(float(a.y));
-    w0.push_back(float(a.z));
-    x1.push_back(float(b.x));
-    y1.push_back(float(b.y));
-    w1.push_back(float(b.z));
-    weight.push_back(w);
-    pixel.push_back(uint8_t(i));
+  void set(size_t k, const dvec3& a, const dvec3& b, int32_t w, int i) {
+    x0[k] = float(a.x);
+    y0[k] = float(a.y);
+    w0[k] = float(a.z);
+    x1[k] = float(b.x);
+    y1[k] = float(b.y);
+    w1[k] = float(b.z);
+    weight[k] = w;
+    pixel[k] = uint8_t(i);
   }
 };
 
@@ -135,6 +135,7 @@ struct Scratch {
   dvec3 own_rgb[kBlockPixels];
   bool flip[kBlockPixels];
   PairBatch batch;
+  std::vector<uint64_t> candidates;  // per edge of the tile's bin, the pixels it may reach
 };
 
 class CoverageShadows final : public PreparedTechnique {
@@ -232,10 +233,33 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
         const uint32_t* begin = bin.begin;
         const uint32_t* end = bin.end;
         const int x0 = bin.x0, x1 = bin.x1, y0 = bin.y0, y1 = bin.y1;
+        const auto writeHard = [&](int px, int py, int32_t count) {
+          const float hard_visibility = count == 0 ? 1.0f : 0.0f;
+          if (textured) {
+            for (Image<float>& c : images.rgb) c.at(px, py) = hard_visibility;
+          } else {
+            images.grey.at(px, py) = hard_visibility;
+          }
+        };
+        // No edge reaches the tile (most of a frame's tiles): the hard value is the answer
+        // unless a pixel's own plane cuts the light, and only then is the tile set up below.
+        if (begin == end) {
+          bool any_cut = false;
+          for (int py = y0; py < y1; ++py) {
+            for (int px = x0; px < x1; ++px) {
+              writeHard(px, py, stencil.at(px, py));
+              const uint32_t id = eye.primitive.at(px, py);
+              any_cut |= id != kNoPrimitive && eye.depth.depth.at(px, py) > 0.0f && !away(id) &&
+                         !away.clearOfLight(id);
+            }
+          }
+          if (!any_cut) return;
+        }
         int x = x0, y = y0;
         while (y < y1) {
           PixelBlock& block = s.block;
           block.active = 0;
+          uint64_t cut = 0;  // pixels whose own plane cuts the light
           int used = 0;
           for (; y < y1 && used < kBlockPixels; x = (x + 1 < x1) ? x + 1 : x0, y += (x == x0)) {
             const int i = used++;
@@ -245,12 +269,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             block.sy[i] = float(y) + 0.5f;
             block.z[i] = eye.depth.depth.at(x, y);
             const int32_t count = stencil.at(x, y);
-            const float hard_visibility = count == 0 ? 1.0f : 0.0f;
-            if (textured) {
-              for (Image<float>& c : images.rgb) c.at(x, y) = hard_visibility;
-            } else {
-              images.grey.at(x, y) = hard_visibility;
-            }
+            writeHard(x, y, count);
             s.hard[i] = 1.0f - float(count);
             const uint32_t id = eye.primitive.at(x, y);
             if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
@@ -258,60 +277,71 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             s.framed[i] = false;
             s.sum[i] = 0.0f;
             s.own_plane[i] = 1.0f;
-            s.sum_rgb[i] = dvec3(0.0);
-            s.own_rgb[i] = dvec3(1.0);
-            // The visible triangle's plane cuts the light: the part behind it is blocked by the
-            // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is).
-            if (!away.clearOfLight(id)) {
-              s.framed[i] = true;
-              ++work.reads;
-              const dvec3 p = view.unproject(x, y, block.z[i]);
-              if (coverageFrame(light, p, s.frames[i])) {
-                s.flip[i] = glm::dot(s.frames[i].b, edge_v) < 0.0;
-                const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
-                if (normal != dvec3(0.0)) {
-                  frontHalfPlane(s.frames[i], normal, s.plane_slope[i], s.plane_offset[i]);
-                  s.own_plane[i] = float(
-                      halfPlaneFraction(s.frames[i].outline, s.plane_slope[i], s.plane_offset[i]));
-                  if (textured && s.own_plane[i] < 1.0f) {
-                    s.own_rgb[i] = texture->halfPlaneFraction(s.plane_slope[i],
-                                                              s.plane_offset[i], s.flip[i]);
-                  }
-                }
-              } else {
-                block.active &= ~(uint64_t(1) << i);
-              }
+            if (textured) {
+              s.sum_rgb[i] = dvec3(0.0);
+              s.own_rgb[i] = dvec3(1.0);
             }
+            // The visible triangle's plane cuts the light: the part behind it is blocked by the
+            // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is),
+            // so the point needs its frame whether an edge reaches it or not.
+            if (!away.clearOfLight(id)) cut |= uint64_t(1) << i;
           }
           for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
           if (block.active == 0) continue;
-          uint64_t framed_ok = block.active;
-          s.batch.clear();
+          // The edges' candidate pixels first, then every frame the block needs in one loop
+          // (independent iterations: the square roots and divisions of one pixel's frame
+          // overlap the next one's), then the pairs.
+          s.candidates.clear();
+          uint64_t reached = 0;
           for (const uint32_t* it = begin; it != end; ++it) {
             work.tests += uint64_t(__builtin_popcountll(block.active));
-            uint64_t candidates = edgeCandidates(bins.tests[*it], block, context.simd) & framed_ok;
-            const PotentialEdge& e = edges.regions.edges[*it];
-            while (candidates != 0) {
-              const int i = __builtin_ctzll(candidates);
-              candidates &= candidates - 1;
-              CoverageFrame& f = s.frames[i];
-              if (!s.framed[i]) {
-                s.framed[i] = true;
-                ++work.reads;
-                const dvec3 p = view.unproject(s.px[i], s.py[i], block.z[i]);
-                if (!coverageFrame(light, p, f)) {
-                  framed_ok &= ~(uint64_t(1) << i);
-                  continue;
-                }
-                s.flip[i] = glm::dot(f.b, edge_v) < 0.0;
-              }
-              ++work.pairs;
-              s.batch.add(f.homogeneous(e.a), f.homogeneous(e.b), edges.weight[*it], i);
+            const uint64_t mask = edgeCandidates(bins.tests[*it], block, context.simd);
+            s.candidates.push_back(mask);
+            reached |= mask;
+          }
+          uint64_t framed_ok = (reached | cut) & block.active;
+          for (uint64_t todo = framed_ok; todo != 0; todo &= todo - 1) {
+            const int i = __builtin_ctzll(todo);
+            s.framed[i] = true;
+            ++work.reads;
+            const dvec3 p = view.unproject(s.px[i], s.py[i], block.z[i]);
+            if (!coverageFrame(light, p, s.frames[i])) {
+              framed_ok &= ~(uint64_t(1) << i);
+              continue;
+            }
+            s.flip[i] = glm::dot(s.frames[i].b, edge_v) < 0.0;
+          }
+          for (uint64_t todo = framed_ok & cut; todo != 0; todo &= todo - 1) {
+            const int i = __builtin_ctzll(todo);
+            const uint32_t id = eye.primitive.at(s.px[i], s.py[i]);
+            const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
+            if (normal == dvec3(0.0)) continue;
+            frontHalfPlane(s.frames[i], normal, s.plane_slope[i], s.plane_offset[i]);
+            s.own_plane[i] =
+                float(halfPlaneFraction(s.frames[i].outline, s.plane_slope[i], s.plane_offset[i]));
+            if (textured && s.own_plane[i] < 1.0f) {
+              s.own_rgb[i] =
+                  texture->halfPlaneFraction(s.plane_slope[i], s.plane_offset[i], s.flip[i]);
             }
           }
+          size_t pairs = 0;
+          for (const uint64_t mask : s.candidates) {
+            pairs += size_t(__builtin_popcountll(mask & framed_ok));
+          }
+          s.batch.resize(pairs);
+          size_t next = 0;
+          for (size_t j = 0; j < s.candidates.size(); ++j) {
+            const uint32_t edge = begin[j];
+            const PotentialEdge& e = edges.regions.edges[edge];
+            for (uint64_t todo = s.candidates[j] & framed_ok; todo != 0; todo &= todo - 1) {
+              const int i = __builtin_ctzll(todo);
+              s.batch.set(next++, s.frames[i].homogeneous(e.a), s.frames[i].homogeneous(e.b),
+                          edges.weight[edge], i);
+            }
+          }
+          work.pairs += pairs;
           const size_t n = s.batch.size();
           PairBatch& b = s.batch;
-          b.fraction.resize(n);
           const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(),      b.x1.data(),
                                         b.y1.data(), b.w1.data(), b.fraction.data()};
           if (n == 0 || textured) {
