@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/pixel_unprojector.h"
 #include "core/view.h"
 
 namespace penumbra {
@@ -20,6 +21,24 @@ TEST(View, UnprojectInvertsProjectionAtPixelCentres) {
     EXPECT_NEAR(back.x, p.x, 1e-4);
     EXPECT_NEAR(back.y, p.y, 1e-4);
     EXPECT_NEAR(back.z, p.z, 1e-4);
+  }
+}
+
+// The affine per-pixel ray must give View::unproject's point: off, the coverage technique
+// would shade and shadow other points than the depth buffer holds.
+TEST(View, PixelUnprojectorMatchesUnproject) {
+  const View view =
+      View::lookAt(1920, 1080, vec3(30, 12, -40), vec3(0, 0.5f, 0), vec3(0, 1, 0), 50, 0.05f);
+  const PixelUnprojector unproject(view);
+  for (int y : {0, 1, 539, 1079}) {
+    for (int x : {0, 7, 960, 1919}) {
+      for (float depth : {1.0f, 0.5f, 1e-3f, 2.5e-6f}) {
+        const dvec3 expected = view.unproject(x, y, depth);
+        const dvec3 got = unproject(x, y, depth);
+        EXPECT_LE(glm::length(got - expected), 1e-12 * glm::length(expected - dvec3(view.eye)))
+            << x << " " << y << " " << depth;
+      }
+    }
   }
 }
 

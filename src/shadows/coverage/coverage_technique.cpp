@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "core/parallel.h"
+#include "core/pixel_unprojector.h"
 #include "core/timer.h"
 #include "shadows/caster_volume.h"
 #include "shadows/coverage/coverage_frame.h"
@@ -222,6 +223,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
     {
       PassTimer timer(stats, "coverage");
       const FacingAway away(scene_, light, view);
+      const PixelUnprojector unproject(view);
       const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
       std::vector<TileWork> tile_work(tiles);
       parallelFor(tiles, [&](size_t index) {
@@ -304,7 +306,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             const int i = __builtin_ctzll(todo);
             s.framed[i] = true;
             ++work.reads;
-            const dvec3 p = view.unproject(s.px[i], s.py[i], block.z[i]);
+            const dvec3 p = unproject(s.px[i], s.py[i], block.z[i]);
             if (!coverageFrame(light, p, s.frames[i])) {
               framed_ok &= ~(uint64_t(1) << i);
               continue;

@@ -119,14 +119,6 @@ void stratifiedSamples(int n, uint64_t seed, uint32_t x, uint32_t y, vec2* out) 
 
 void fixedSamples(int n, uint64_t seed, vec2* out) { stratifiedSamples(n, seed, 0, 0, out); }
 
-void planeBasis(const dvec3& n, dvec3& tangent, dvec3& bitangent) {
-  const double sign = std::copysign(1.0, n.z);
-  const double a = -1.0 / (sign + n.z);
-  const double b = n.x * n.y * a;
-  tangent = dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-  bitangent = dvec3(b, sign + n.y * n.y * a, -n.y);
-}
-
 dvec3 planarLightPoint(const Light& light, vec2 u) {
   const dvec3 c(light.center);
   if (light.shape == LightShape::Rectangle) {

@@ -13,6 +13,7 @@
 //
 // Random numbers are a pure function of (seed, pixel, sample): no global state, so a pixel's
 // samples do not depend on which thread ran it or in what order.
+#include <cmath>
 #include <cstdint>
 
 #include "core/math.h"
@@ -85,7 +86,14 @@ void fixedSamples(int n, uint64_t seed, vec2* out);
 // strata of equal area. (Spheres are sampled by direction, sampleSphereCone.)
 struct Light;
 dvec3 planarLightPoint(const Light& light, vec2 u);
-// An orthonormal basis (tangent, bitangent) of the plane with unit normal n (Duff et al. 2017).
-void planeBasis(const dvec3& n, dvec3& tangent, dvec3& bitangent);
+// An orthonormal basis (tangent, bitangent) of the plane with unit normal n (Duff et al. 2017),
+// right-handed: tangent x bitangent = n. Inline: the coverage technique sets one up per pixel.
+inline void planeBasis(const dvec3& n, dvec3& tangent, dvec3& bitangent) {
+  const double sign = std::copysign(1.0, n.z);
+  const double a = -1.0 / (sign + n.z);
+  const double b = n.x * n.y * a;
+  tangent = dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  bitangent = dvec3(b, sign + n.y * n.y * a, -n.y);
+}
 
 }  // namespace penumbra
