@@ -297,6 +297,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
               setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
                          origins, light, scratch.origin_triangle, f, known);
             }
+            f.centre_count += centreCountShift(edges.edges[*it], edges.triangles.data(), f,
+                                               light_centre, eye_position);
             if (!edgeAtPixel(edges.edges[*it], edges.triangles.data(), f, samples_, pixel_edge,
                              weight))
               continue;

@@ -132,6 +132,46 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   f.reach = 0;
   return true;
 }
+int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
+                         const PixelFrame& f, const dvec3& centre, const dvec3& eye) {
+  // The quad is the part of the plane through the centre and the edge beyond the edge: the
+  // points x = centre + alpha (a - centre) + beta (b - centre), alpha, beta >= 0,
+  // alpha + beta >= 1. From such a point the segment toward the centre passes through the edge.
+  const dvec3 ca = e.a - centre, cb = e.b - centre;
+  const dvec3 m = glm::cross(ca, cb);
+  const dvec3& from = f.start.depth_point;
+  const double at_from = glm::dot(m, from - centre), at_to = glm::dot(m, f.p - centre);
+  if ((at_from > 0.0) == (at_to > 0.0)) return 0;
+  // The stencil found the depth-buffer point's side of the quad by comparing depths along the
+  // eye's ray in float: where the quad meets that ray within 1e-5 of the point's distance (a
+  // quad in the plane of the visible surface, the light centre in that plane), the side it
+  // took is rounding, and no shift is known.
+  if (std::fabs(at_from) <= 1e-5 * std::fabs(glm::dot(m, from - eye))) return 0;
+  const double mm = glm::dot(m, m);
+  if (!(mm > 0.0)) return 0;
+  const dvec3 x = from + (at_from / (at_from - at_to)) * (f.p - from) - centre;
+  const double alpha = glm::dot(glm::cross(x, cb), m) / mm;
+  const double beta = glm::dot(glm::cross(ca, x), m) / mm;
+  if (!(alpha >= 0.0 && beta >= 0.0 && alpha + beta >= 1.0)) return 0;
+  // Just off the quad on one side, the segment toward the centre passes beside the edge on
+  // that side and crosses the triangles of the edge that lie there: on the shaded point's side
+  // it starts crossing them (+1 each), on the depth-buffer point's it stops (-1 each).
+  // A triangle within rounding of that plane is edge-on to the centre: the stencil's volumes
+  // leave it out (silhouette.h), and so does the shift.
+  const bool to_side = at_to > 0.0;
+  const double m_length = std::sqrt(mm);
+  int32_t shift = 0;
+  for (uint32_t k = 0; k < e.triangle_count; ++k) {
+    const EdgeTriangle& t = triangles[e.first_triangle + k];
+    if (t.id == f.primitive) return 0;
+    const dvec3 to_opposite = t.opposite - centre;
+    const double side = glm::dot(m, to_opposite);
+    if (std::fabs(side) <= 1e-9 * m_length * glm::length(to_opposite)) continue;
+    shift += (side > 0.0) == to_side ? 1 : -1;
+  }
+  return shift;
+}
+
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.
 bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,

@@ -76,6 +76,15 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
                 const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
                 PixelFrame& f, float& known);
 
+// How the count at the light centre changes from the pixel's depth-buffer point, where the
+// stencil counted it, to the shaded point f.p the oracle's rays leave from: by the edge's
+// triangles that the segment toward the centre starts or stops crossing when it sweeps over
+// the edge, which happens where the path between the two points crosses the edge's shadow
+// quad from the centre. 0 for the visible triangle's own edges (the stencil skips their
+// quads there: ShadowStencilOptions::skip_own_quads).
+int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
+                         const PixelFrame& f, const dvec3& centre, const dvec3& eye);
+
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.
 bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,

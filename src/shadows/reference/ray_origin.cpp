@@ -137,6 +137,7 @@ RayStart RayOrigins::start(int x, int y, float depth, uint32_t primitive,
   const double distance = glm::length(to_eye);
   const double footprint = distance * pixel_angle_;
   RayStart start;
+  start.depth_point = p;
   if (primitive != kNoPrimitive && primitive < triangleCount()) {
     if (t.primitive != primitive) deriveTriangle(primitive, t);
     const dvec3 on_surface = closestPointOnTriangle(p, t.a, t.b, t.c);

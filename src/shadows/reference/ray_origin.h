@@ -13,6 +13,7 @@ namespace penumbra {
 
 struct RayStart {
   dvec3 origin{0.0};
+  dvec3 depth_point{0.0};   // the pixel's depth-buffer point (View::unproject) it came from
   dvec3 plane_point{0.0};   // a vertex of the visible triangle
   dvec3 plane_normal{0.0};  // unnormalised, on the side the eye sees; zero: no usable plane
 

@@ -1,0 +1,79 @@
+// The exact soft shadow volumes take the count at the light centre from the stencil, which was
+// decided at the pixel's depth-buffer point, while the oracle's rays leave from that point
+// snapped onto the visible triangle. centreCountShift says how the count changes between the
+// two: by the edge's triangles the segment toward the centre starts or stops crossing where
+// the path between the points crosses the edge's shadow quad.
+#include <gtest/gtest.h>
+
+#include "shadows/exact/pixel_edges.h"
+
+namespace penumbra {
+namespace test_exact_centre_shift {
+
+// The light centre above the origin; an open edge along z at height 2, x = 0, its one
+// triangle reaching toward -x (so it shadows the floor at x < 0 below it, seen from the centre).
+// The edge's quad is the part beyond the edge of the plane x = 0: x = 0, y < 2.
+struct HalfPlane {
+  dvec3 centre{0.0, 10.0, 0.0};
+  dvec3 eye{5.0, 3.0, 5.0};
+  PotentialEdge edge{dvec3(0.0, 2.0, -1.0), dvec3(0.0, 2.0, 1.0), 0, 1};
+  std::vector<EdgeTriangle> triangles{
+      EdgeTriangle{7, true, false, 1, dvec3(-1.0, 2.0, 0.0), dvec3(0.0, 1.0, 0.0), -2.0}};
+
+  PixelFrame frame(const dvec3& depth_point, const dvec3& shaded, uint32_t visible) const {
+    PixelFrame f;
+    f.start.depth_point = depth_point;
+    f.p = shaded;
+    f.primitive = visible;
+    return f;
+  }
+  int32_t shift(const dvec3& depth_point, const dvec3& shaded, uint32_t visible = 99) const {
+    return centreCountShift(edge, triangles.data(), frame(depth_point, shaded, visible), centre,
+                            eye);
+  }
+};
+
+// From a floor point just right of x = 0 (lit at the centre) to one just left (the triangle
+// between it and the centre): +1, and back -1. If these failed, a pixel whose depth-buffer
+// point and shaded point straddle another object's hard shadow boundary would keep the
+// stencil's count and be lit where the oracle's rays are all blocked, or the reverse.
+TEST(ExactCentreShift, CrossingTheQuadCountsTheTriangleEnteredOrLeft) {
+  const HalfPlane s;
+  EXPECT_EQ(s.shift(dvec3(1e-3, 0.0, 0.0), dvec3(-1e-3, 0.0, 0.0)), 1);
+  EXPECT_EQ(s.shift(dvec3(-1e-3, 0.0, 0.0), dvec3(1e-3, 0.0, 0.0)), -1);
+}
+
+// Both points on one side, or crossing the plane x = 0 outside the quad (above the edge, or
+// beyond its ends): no change. If these failed, pixels near the plane of an edge but nowhere
+// near its shadow would gain or lose a whole light.
+TEST(ExactCentreShift, NoCrossingOfTheQuadNoShift) {
+  const HalfPlane s;
+  EXPECT_EQ(s.shift(dvec3(2e-3, 0.0, 0.0), dvec3(1e-3, 0.0, 0.0)), 0);
+  EXPECT_EQ(s.shift(dvec3(1e-3, 5.0, 0.0), dvec3(-1e-3, 5.0, 0.0)), 0);   // between edge and centre
+  EXPECT_EQ(s.shift(dvec3(1e-3, 0.0, 4.0), dvec3(-1e-3, 0.0, 4.0)), 0);   // past the edge's end
+}
+
+// The visible triangle's own edges: the stencil never counts their quads at its pixels
+// (ShadowStencilOptions::skip_own_quads), so there is nothing to correct. And a depth-buffer
+// point within rounding of the quad's plane along the eye's ray: the stencil's side was
+// rounding, and the count is left as it is. If these failed, a surface whose plane holds the
+// light centre would flip between lit and dark along its own edges.
+TEST(ExactCentreShift, OwnEdgesAndRoundingTiesAreLeftAlone) {
+  const HalfPlane s;
+  EXPECT_EQ(s.shift(dvec3(1e-3, 0.0, 0.0), dvec3(-1e-3, 0.0, 0.0), 7), 0);
+  EXPECT_EQ(s.shift(dvec3(1e-9, 0.0, 0.0), dvec3(-1e-3, 0.0, 0.0)), 0);
+}
+
+// An edge of two triangles on opposite sides of the quad's plane is no silhouette from the
+// centre and has no quad: the two changes cancel. If this failed, every interior edge of a mesh
+// would move the count of the pixels its plane passes between.
+TEST(ExactCentreShift, NoSilhouetteNoShift) {
+  HalfPlane s;
+  s.edge.triangle_count = 2;
+  s.triangles.push_back(
+      EdgeTriangle{8, true, false, -1, dvec3(1.0, 2.0, 0.0), dvec3(0.0, 1.0, 0.0), -2.0});
+  EXPECT_EQ(s.shift(dvec3(1e-3, 0.0, 0.0), dvec3(-1e-3, 0.0, 0.0)), 0);
+}
+
+}  // namespace test_exact_centre_shift
+}  // namespace penumbra
