@@ -98,7 +98,12 @@ class ExactSoftShadows final : public PreparedTechnique {
 float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
                                     const std::vector<const CuttingTriangle*>& cutting,
                                     const Light& light, bool simd, Scratch& scratch) const {
-  if (!f.ready) return f.stencil == 0 ? 1.0f : 0.0f;  // clear of the light, and no edge
+  // The count at the centre is a number of triangles crossed, never below 0: a negative
+  // stencil, or the visible triangle taken out of a stencil that did not count it (its own
+  // quads rasterized past a pixel whose depth-buffer point lies just off it), is rounding of
+  // the raster passes, and the count is 0 there.
+  if (!f.ready) return f.stencil <= 0 ? 1.0f : 0.0f;  // clear of the light, and no edge
+  const int32_t centre_count = std::max(f.centre_count, 0);
   const dvec3 c(light.center);
   const double r = light.radius;
   const int n = samples_.n;
@@ -121,9 +126,9 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
     }
   }
   if (edges.empty() && cutting.empty())
-    return f.centre_count == 0 ? float(n - into_count) / float(n) : 0.0f;
+    return centre_count == 0 ? float(n - into_count) / float(n) : 0.0f;
   // No sample's count can come down to 0 (cutting triangles only add).
-  if (f.centre_count > f.reach) return 0.0f;
+  if (centre_count > f.reach) return 0.0f;
 
   // Sample positions on the plane at unit distance (sampleSphereCone's angles, in float).
   float* sx = scratch.x.data()->v;
@@ -131,7 +136,7 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
   int32_t* count = scratch.count.data()->v;
   samplePositions(samples_.radius2.data(), samples_.cos_phi.data(), samples_.sin_phi.data(),
                   f.cone.one_minus_cos_max, sx, sy, samples_.padded, simd);
-  std::fill(count, count + samples_.padded, f.centre_count);
+  std::fill(count, count + samples_.padded, centre_count);
   for (const PixelEdge& e : edges) {
     for (int k = 0; k < 2; ++k) {
       const uint32_t b = e.runs.begin[k];
