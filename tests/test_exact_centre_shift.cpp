@@ -53,15 +53,49 @@ TEST(ExactCentreShift, NoCrossingOfTheQuadNoShift) {
   EXPECT_EQ(s.shift(dvec3(1e-3, 0.0, 4.0), dvec3(-1e-3, 0.0, 4.0)), 0);   // past the edge's end
 }
 
-// The visible triangle's own edges: the stencil never counts their quads at its pixels
-// (ShadowStencilOptions::skip_own_quads), so there is nothing to correct. And a depth-buffer
-// point within rounding of the quad's plane along the eye's ray: the stencil's side was
-// rounding, and the count is left as it is. If these failed, a surface whose plane holds the
-// light centre would flip between lit and dark along its own edges.
-TEST(ExactCentreShift, OwnEdgesAndRoundingTiesAreLeftAlone) {
+// A depth-buffer point within rounding of the quad's plane along the eye's ray: the stencil's
+// side was rounding, and the count is left as it is. If this failed, a surface whose plane
+// holds the light centre would flip between lit and dark along its edges.
+TEST(ExactCentreShift, RoundingTiesAreLeftAlone) {
   const HalfPlane s;
-  EXPECT_EQ(s.shift(dvec3(1e-3, 0.0, 0.0), dvec3(-1e-3, 0.0, 0.0), 7), 0);
   EXPECT_EQ(s.shift(dvec3(1e-9, 0.0, 0.0), dvec3(-1e-3, 0.0, 0.0)), 0);
+}
+
+// An edge of the visible triangle (a floor, x < 0) and a neighbour across it. The oracle's
+// origin sits on the floor by the edge; the depth-buffer point, which the rasterizer's snapping
+// put just past the edge, lies beyond the neighbour's plane or on the neighbour itself.
+PotentialEdge cornerEdge() { return PotentialEdge{dvec3(0, 0, -1), dvec3(0, 0, 1), 0, 2}; }
+const EdgeTriangle kFloor{7, true, false, 1, dvec3(-1, 0, 0), dvec3(0, 1, 0), 0.0};
+
+// A wall rising at x = 0 with the light behind it: segments from the origin toward the centre
+// cross the wall, those from the depth-buffer point behind it do not: +1. If this failed,
+// floor pixels along the foot of a wall that hides the light would be lit.
+TEST(ExactCentreShift, NeighbourBetweenTheOriginAndTheCentre) {
+  const std::vector<EdgeTriangle> triangles{
+      kFloor, EdgeTriangle{8, true, false, 1, dvec3(0, 1, 0), dvec3(1, 0, 0), 0.0}};
+  PixelFrame f;
+  f.primitive = 7;
+  f.start.depth_point = dvec3(1e-4, 0, 0);
+  f.p = dvec3(-1e-4, 1e-6, 0);
+  EXPECT_EQ(centreCountShift(cornerEdge(), triangles.data(), f, dvec3(5, 3, 0), dvec3(-4, 5, 3)),
+            1);
+}
+
+// The floor continues flat past the edge (a neighbour in its plane) and the light is below
+// it: the stencil counted the neighbour under the depth-buffer point as it counts a visible
+// triangle with the centre behind it, while the origin's segment passes the neighbour by: -1.
+// If this failed, pixels along the seam of a flat or smooth surface at its terminator would
+// stay dark where the oracle sees part of the light.
+TEST(ExactCentreShift, DepthPointOnTheNeighbourCountedAsTheStencilDid) {
+  const std::vector<EdgeTriangle> triangles{
+      kFloor, EdgeTriangle{8, false, false, 1, dvec3(1, 0, 0), dvec3(0, 1, 0), 0.0}};
+  PixelFrame f;
+  f.primitive = 7;
+  f.start.depth_point = dvec3(1e-4, 0, 0);
+  f.p = dvec3(-1e-4, 1e-5, 0);
+  EXPECT_EQ(
+      centreCountShift(cornerEdge(), triangles.data(), f, dvec3(0.5, -3, 0), dvec3(-4, 5, 3)),
+      -1);
 }
 
 // An edge of two triangles on opposite sides of the quad's plane is no silhouette from the

@@ -101,6 +101,19 @@ bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const Cut
   const double hit = glm::dot(e2, r) * inv;
   return hit > 0.0 && hit < t_max;
 }
+namespace {
+
+// Whether p, a point of the triangle's plane up to rounding, projects into the triangle abc
+// (edges included).
+bool pointOnTriangle(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3& c) {
+  const dvec3 n = glm::cross(b - a, c - a);
+  return glm::dot(glm::cross(b - a, p - a), n) >= 0.0 &&
+         glm::dot(glm::cross(c - b, p - b), n) >= 0.0 &&
+         glm::dot(glm::cross(a - c, p - c), n) >= 0.0;
+}
+
+}  // namespace
+
 // Sets up the frame of a pixel; false when its visibility is already known (`known`).
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
                 const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
@@ -127,8 +140,13 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   f.light_near = glm::length(c - f.p) - r;
   f.cos_max = 1.0 - omc;
   f.sin_max = std::sqrt(omc * (2.0 - omc));
-  // The stencil counted the visible triangle exactly when the centre is behind it.
-  f.centre_count = stencil - (f.start.intoSurface(c) ? 1 : 0);
+  // The stencil counted the visible triangle exactly when the centre is behind it and the
+  // depth-buffer point lies on it (the segment from the point to the centre then starts on it);
+  // a point the rasterizer's snapping put just past one of its edges is outside its volume.
+  bool counted = f.start.intoSurface(c);
+  if (counted && triangle.primitive == primitive && triangle.length > 0.0)
+    counted = pointOnTriangle(f.start.depth_point, triangle.a, triangle.b, triangle.c);
+  f.centre_count = stencil - (counted ? 1 : 0);
   f.reach = 0;
   return true;
 }
@@ -137,9 +155,43 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
   // The quad is the part of the plane through the centre and the edge beyond the edge: the
   // points x = centre + alpha (a - centre) + beta (b - centre), alpha, beta >= 0,
   // alpha + beta >= 1. From such a point the segment toward the centre passes through the edge.
+  const dvec3& from = f.start.depth_point;
+  // An edge of the visible triangle: the origin was snapped onto the triangle, often right at
+  // this edge, and the depth-buffer point may lie just past it; the stencil never drew the
+  // edge's quad here, so the neighbours' crossings are compared directly, where the
+  // depth-buffer point is clear of a neighbour's plane.
+  bool own = false;
+  for (uint32_t k = 0; k < e.triangle_count; ++k)
+    own = own || triangles[e.first_triangle + k].id == f.primitive;
+  if (own) {
+    int32_t shift = 0;
+    const double scale = glm::length(from - eye);
+    for (uint32_t k = 0; k < e.triangle_count; ++k) {
+      const EdgeTriangle& t = triangles[e.first_triangle + k];
+      if (t.id == f.primitive) continue;
+      CuttingTriangle tri;
+      tri.id = t.id;
+      tri.v[0] = e.a;
+      tri.v[1] = e.b;
+      tri.v[2] = t.opposite;
+      const int32_t at_origin =
+          int32_t(segmentHitsTriangle(f.p, centre - f.p, 1.0 - kTfarShrink, tri));
+      // A depth-buffer point on the neighbour's plane (a smooth surface, a flat one split in
+      // two) is a point of the neighbour's surface: the stencil counted the neighbour as it
+      // counts the visible triangle, when the point lies on it and the centre is behind it.
+      const double at_depth_point = glm::dot(t.normal, from) + t.offset;
+      const int32_t stencil_counted =
+          std::fabs(at_depth_point) <= 1e-6 * scale
+              ? int32_t((glm::dot(t.normal, centre) + t.offset > 0.0) !=
+                            (glm::dot(t.normal, eye) + t.offset > 0.0) &&
+                        pointOnTriangle(from, e.a, e.b, t.opposite))
+              : int32_t(segmentHitsTriangle(from, centre - from, 1.0 - kTfarShrink, tri));
+      shift += at_origin - stencil_counted;
+    }
+    return shift;
+  }
   const dvec3 ca = e.a - centre, cb = e.b - centre;
   const dvec3 m = glm::cross(ca, cb);
-  const dvec3& from = f.start.depth_point;
   const double at_from = glm::dot(m, from - centre), at_to = glm::dot(m, f.p - centre);
   if ((at_from > 0.0) == (at_to > 0.0)) return 0;
   // The stencil found the depth-buffer point's side of the quad by comparing depths along the
@@ -163,7 +215,6 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
   int32_t shift = 0;
   for (uint32_t k = 0; k < e.triangle_count; ++k) {
     const EdgeTriangle& t = triangles[e.first_triangle + k];
-    if (t.id == f.primitive) return 0;
     const dvec3 to_opposite = t.opposite - centre;
     const double side = glm::dot(m, to_opposite);
     if (std::fabs(side) <= 1e-9 * m_length * glm::length(to_opposite)) continue;

@@ -80,8 +80,9 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
 // stencil counted it, to the shaded point f.p the oracle's rays leave from: by the edge's
 // triangles that the segment toward the centre starts or stops crossing when it sweeps over
 // the edge, which happens where the path between the two points crosses the edge's shadow
-// quad from the centre. 0 for the visible triangle's own edges (the stencil skips their
-// quads there: ShadowStencilOptions::skip_own_quads).
+// quad from the centre. For an edge of the visible triangle (the stencil skips its quad at the
+// triangle's pixels, ShadowStencilOptions::skip_own_quads, and the origin was snapped onto the
+// triangle, often right at that edge) the neighbours are tested directly from both points.
 int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
                          const PixelFrame& f, const dvec3& centre, const dvec3& eye);
 
