@@ -1,11 +1,15 @@
 // The exact soft shadow volumes take the count at the light centre from the stencil, which was
 // decided at the pixel's depth-buffer point, while the oracle's rays leave from that point
-// snapped onto the visible triangle. centreCountShift says how the count changes between the
-// two: by the edge's triangles the segment toward the centre starts or stops crossing where
-// the path between the points crosses the edge's shadow quad.
+// snapped onto the visible triangle. For a z-fail volume centreCountShift says how the count
+// changes between the two: by the edge's triangles the segment toward the centre starts or
+// stops crossing where the path between the points crosses the edge's shadow quad. For a
+// z-pass volume the stencil's quads are replayed (test_shadow_stencil_replay.cpp) and the caps
+// the origin may lie behind are counted by capCrossings (below).
 #include <gtest/gtest.h>
 
+#include "scene/scene_builder.h"
 #include "shadows/exact/pixel_edges.h"
+#include "shadows/exact/vertex_rings.h"
 
 namespace penumbra {
 namespace test_exact_centre_shift {
@@ -107,6 +111,37 @@ TEST(ExactCentreShift, NoSilhouetteNoShift) {
   s.triangles.push_back(
       EdgeTriangle{8, true, false, -1, dvec3(1.0, 2.0, 0.0), dvec3(0.0, 1.0, 0.0), -2.0});
   EXPECT_EQ(s.shift(dvec3(1e-3, 0.0, 0.0), dvec3(-1e-3, 0.0, 0.0)), 0);
+}
+
+// A floor (x < 0, y = 0) meeting a wall (x = 0, rising) in one mesh, the light beyond the wall,
+// the eye in front of it. The oracle's origin, snapped to the floor's border and lifted off
+// it, can end up just past the wall's plane, where the segment from the eye crosses the wall:
+// along that segment a z-pass count leaves the wall's volume through the wall itself (-1), as
+// the origin, on the light's side of the wall, is not shadowed by it; an origin in front of the
+// wall crosses nothing. If this failed, the stencil's count, taken in front of the wall, would
+// stand for an origin the wall no longer shadows.
+TEST(ExactCentreShift, OriginBehindANeighbourCrossesItsCap) {
+  Scene scene;
+  const uint32_t material = addMaterial(scene, "grey", vec3(0.7f));
+  Mesh mesh;
+  mesh.name = "corner";
+  mesh.positions = {vec3(-1, 0, -1), vec3(0, 0, -1), vec3(0, 0, 1), vec3(-1, 0, 1),
+                    vec3(0, 1, -1), vec3(0, 1, 1)};
+  mesh.indices = {0, 2, 1, 0, 3, 2, 1, 2, 5, 1, 5, 4};  // floor: 0 and 1, wall: 2 and 3
+  addMesh(scene, std::move(mesh), material);
+  addLight(scene, vec3(5, 3, 0), 0.1f);
+  scene.finalize();
+  const VertexRings rings(scene);
+  std::vector<uint32_t> neighbours;
+  rings.neighbours(1, neighbours);
+  EXPECT_EQ(neighbours, (std::vector<uint32_t>{0, 2}));  // sharing a vertex with triangle 1
+  const dvec3 centre(5, 3, 0), eye(-4, 0.5, 0.2);
+  PixelFrame f;
+  f.primitive = 1;
+  f.p = dvec3(-1e-4, 1e-6, 0.1);  // in front of the wall
+  EXPECT_EQ(capCrossings(scene, neighbours, f, centre, eye), 0);
+  f.p = dvec3(1e-6, 1e-6, 0.1);  // just past its plane
+  EXPECT_EQ(capCrossings(scene, neighbours, f, centre, eye), -1);
 }
 
 }  // namespace test_exact_centre_shift

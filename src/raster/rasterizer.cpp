@@ -191,6 +191,28 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
   sumInto(counts, stats, true);
 }
 
+int32_t stencilContributionAt(const SetupTriangle& t, int x, int y, const DepthBuffer& depth,
+                              const Image<uint32_t>* primitive) {
+  const int tx0 = x & ~(kBinTileSize - 1), ty0 = y & ~(kBinTileSize - 1);
+  const int tx1 = std::min(depth.width(), tx0 + kBinTileSize) - 1;
+  const int ty1 = std::min(depth.height(), ty0 + kBinTileSize) - 1;
+  TileEdges e;
+  if (!setupTileRect(t, tx0, ty0, tx1, ty1, e)) return 0;
+  if (x < e.x0 || x > e.x1 || y < e.y0 || y > e.y1) return 0;
+  if (!setupRectEdges(t, e)) return 0;
+  const int rx = x - e.tx0, ry = y - e.ty0;
+  for (int i = 0; i < 3; ++i)
+    if ((e.e0[i] + e.dy[i] * ry) + e.dx[i] * rx < 0) return 0;
+  const float stored = depth.depth.at(x, y);
+  const float d = triangleDepthAt(e, x, y);
+  const bool zfail = (t.flags & kZFail) != 0;
+  const bool pass = zfail ? d <= stored : d > stored;
+  const bool own = primitive != nullptr &&
+                   (primitive->at(x, y) == t.owners[0] || primitive->at(x, y) == t.owners[1]);
+  if (!(stored > 0.0f) || !pass || own) return 0;
+  return t.payload * t.facing * (zfail ? -1 : 1);
+}
+
 void forEachBinTile(const ClipTriangles& triangles, int width, int height,
                     const std::function<bool(const SetupTriangle&)>& keep,
                     const std::function<void(const TileTriangles&)>& visit, Stats& stats) {

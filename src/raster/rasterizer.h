@@ -49,6 +49,12 @@ void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,
 // The same for triangles set up already (setupTriangles), which the caller counted.
 void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer& depth,
                       Image<int32_t>& stencil, Stats& stats, const StencilOptions& options);
+// What rasterizeStencil adds at pixel (x, y) for the set-up polygon t (`primitive`: the ids of
+// StencilOptions::primitive, or null): the same edge functions, the same float depth stepped
+// from the bin tile's corner and the same depth rule and owners, so a pass that needs to know
+// whether the stencil counted a polygon at a pixel gets the stencil's own decision.
+int32_t stencilContributionAt(const SetupTriangle& t, int x, int y, const DepthBuffer& depth,
+                              const Image<uint32_t>* primitive);
 
 // The tile loop the passes above are built on, for passes with their own pixel kernels (penumbra
 // wedges): sets up `triangles`, bins those keep(triangle) accepts (a pass that draws only some,

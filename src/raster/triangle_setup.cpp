@@ -227,8 +227,10 @@ void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes,
 // the result is the same either way.
 template <class VertexFn>
 void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, int height,
-                const ClipPlanes& planes, const VertexFn& vertex, std::vector<SetupTriangle>& out) {
+                const ClipPlanes& planes, const VertexFn& vertex, std::vector<SetupTriangle>& out,
+                std::vector<uint32_t>* sources) {
   for (size_t t = begin; t < end; ++t) {
+    if (sources != nullptr) sources->resize(out.size(), uint32_t(t - 1));
     const uint8_t flags = tris.flags.empty() ? 0 : tris.flags[t];
     const uint32_t* idx = &tris.indices[t * 3];
     const ClassifiedVertex& c0 = vertex(idx[0]);
@@ -249,11 +251,13 @@ void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, 
     if (c0.code & c1.code & c2.code & kOutsideBits) continue;
     setupClipped(tris, t, planes, width, height, flags, out);
   }
+  if (sources != nullptr) sources->resize(out.size(), uint32_t(end - 1));
 }
 
 }  // namespace
 
-std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, int height) {
+std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, int height,
+                                          std::vector<uint32_t>* sources) {
   PENUMBRA_CHECK(width > 0 && height > 0 && width <= kMaxImageSize && height <= kMaxImageSize,
                  "image size {}x{} is outside 1..{}", width, height, kMaxImageSize);
   PENUMBRA_DCHECK(tris.indices.size() == tris.payload.size() * 3);
@@ -278,17 +282,19 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
 
   const size_t chunks = (tris.size() + kChunk - 1) / kChunk;
   std::vector<std::vector<SetupTriangle>> parts(chunks);
+  std::vector<std::vector<uint32_t>> part_sources(sources != nullptr ? chunks : 0);
   parallelFor(chunks, [&](size_t c) {
     const size_t begin = c * kChunk, end = std::min(tris.size(), begin + kChunk);
     parts[c].reserve(end - begin);
     if (per_vertex) {
       const ClassifiedVertex* table = classified.get();
       setupRange(tris, begin, end, width, height, planes,
-                 [table](uint32_t i) -> const ClassifiedVertex& { return table[i]; }, parts[c]);
+                 [table](uint32_t i) -> const ClassifiedVertex& { return table[i]; }, parts[c],
+                 sources != nullptr ? &part_sources[c] : nullptr);
     } else {
       setupRange(tris, begin, end, width, height, planes,
                  [&](uint32_t i) { return classify(tris.vertex(i), planes, width, height); },
-                 parts[c]);
+                 parts[c], sources != nullptr ? &part_sources[c] : nullptr);
     }
   });
   size_t total = 0;
@@ -296,6 +302,11 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
   std::vector<SetupTriangle> out;
   out.reserve(total);
   for (const auto& p : parts) out.insert(out.end(), p.begin(), p.end());
+  if (sources != nullptr) {
+    sources->clear();
+    sources->reserve(total);
+    for (const auto& p : part_sources) sources->insert(sources->end(), p.begin(), p.end());
+  }
   return out;
 }
 

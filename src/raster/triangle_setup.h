@@ -90,6 +90,9 @@ struct SetupTriangle {
 // edge functions from the snapped vertices, the depth plane from the unsnapped ones.
 // Output keeps input order (a clipped triangle's fan pieces stay together), so passes that
 // resolve ties by drawing order are deterministic. Zero-area and off-screen triangles vanish.
-std::vector<SetupTriangle> setupTriangles(const ClipTriangles& triangles, int width, int height);
+// `sources`, when given, receives for every output triangle the index of the input triangle it
+// came from.
+std::vector<SetupTriangle> setupTriangles(const ClipTriangles& triangles, int width, int height,
+                                          std::vector<uint32_t>* sources = nullptr);
 
 }  // namespace penumbra

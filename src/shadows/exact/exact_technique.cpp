@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -32,6 +33,7 @@
 #include "shadows/exact/edge_screen_test.h"
 #include "shadows/exact/light_samples.h"
 #include "shadows/exact/pixel_edges.h"
+#include "shadows/exact/vertex_rings.h"
 #include "shadows/exact/potential_edges.h"
 #include "shadows/exact/sample_kernel.h"
 #include "shadows/facing_away.h"
@@ -63,6 +65,7 @@ struct Scratch {
   std::vector<PixelEdge> edges[kBlockPixels];
   std::vector<const CuttingTriangle*> cutting[kBlockPixels];
   OriginTriangle origin_triangle;  // the last visible triangle set up (RayOrigins::start)
+  std::vector<uint32_t> neighbours;  // of the visible triangle (VertexRings)
   explicit Scratch(const SampleSet& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
         into(size_t(s.n)), cone_samples(size_t(s.n)) {}
@@ -79,7 +82,7 @@ class ExactSoftShadows final : public PreparedTechnique {
  public:
   ExactSoftShadows(const ExactOptions& options, const Scene& scene)
       : options_(options), scene_(scene), bounds_(scene.bounds()),
-        samples_(makeSampleSet(options.samples, options.seed)) {}
+        samples_(makeSampleSet(options.samples, options.seed)), rings_(scene) {}
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override;
@@ -93,6 +96,7 @@ class ExactSoftShadows final : public PreparedTechnique {
   const Scene& scene_;
   Bounds3 bounds_;  // of every visible point (binEdges)
   SampleSet samples_;
+  VertexRings rings_;
 };
 
 float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
@@ -187,6 +191,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   // Two-sided casters: the stencil counts every triangle between the point and the centre.
   stencil_options.policy = CasterPolicy::TwoSided;
   stencil_options.skip_own_quads = true;
+  StencilQuads quads;
+  stencil_options.quads = &quads;
   const Image<int32_t> stencil =
       shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
 
@@ -212,6 +218,14 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     const FacingAway away(scene_, light, view);
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
     const dvec3 light_centre(light.center), eye_position(view.eye);
+    const QuadReplay replay{
+        quads, eye, light_centre, eye_position,
+        -glm::normalize(dvec3(view.view[0][2], view.view[1][2], view.view[2][2])),
+        double(view.near_plane)};
+    // Whether the visible triangle's mesh was drawn z-pass (its quads replayed, QuadReplay).
+    const auto replayed = [&](uint32_t primitive) {
+      return quads.zfail[scene_.locateTriangle(primitive).first] == 0;
+    };
     // A pixel footprint at unit distance, at the image centre (ray_origin.h).
     const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
     std::vector<TileWork> tile_work(tiles);
@@ -231,6 +245,31 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
       bool tile_cuts = false;
       for (const uint32_t* it = begin; it != end && !tile_cuts; ++it)
         tile_cuts = bins.tests[*it].any_cuts;
+      // A pixel's frame (setupPixel); on a z-pass volume with the caps of the visible
+      // triangle's neighbours its origin may lie behind (capCrossings).
+      const auto setUp = [&](int px, int py, float depth, uint32_t id, PixelFrame& f,
+                             float& known) {
+        const bool z_pass = replayed(id);
+        if (!setupPixel(px, py, depth, id, f.stencil, origins, light, scratch.origin_triangle,
+                        z_pass, f, known))
+          return false;
+        // Only an origin near the triangle's border can hide behind a neighbour: the eye sees
+        // the depth-buffer point, and a neighbour between the two rays comes within their
+        // distance of the origin.
+        const OriginTriangle& t = scratch.origin_triangle;
+        double border = std::numeric_limits<double>::infinity();
+        if (t.primitive == id) {
+          const dvec3 corners[3] = {t.a, t.b, t.c};
+          for (int k = 0; k < 3; ++k)
+            border = std::min(border, glm::dot(f.p - corners[k], t.inward[k]));
+        }
+        if (z_pass && border <= 8.0 * glm::length(f.p - f.start.depth_point)) {
+          rings_.neighbours(id, scratch.neighbours);
+          f.centre_count +=
+              capCrossings(scene_, scratch.neighbours, f, light_centre, eye_position);
+        }
+        return true;
+      };
       // Blocks of up to 64 pixels, row after row of the tile.
       int x = x0, y = y0;
       while (y < y1) {
@@ -254,8 +293,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           f.primitive = id;
           if (!away.clearOfLight(id)) {
             float known = 0.0f;
-            if (!setupPixel(x, y, block.z[i], id, f.stencil, origins, light,
-                            scratch.origin_triangle, f, known)) {
+            if (!setUp(x, y, block.z[i], id, f, known)) {
               soft.at(x, y) = known;
               continue;
             }
@@ -299,11 +337,15 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             PixelFrame& f = scratch.frames[i];
             if (!f.ready) {
               float known = 0.0f;  // never set: a clear pixel is outside the light
-              setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
-                         origins, light, scratch.origin_triangle, f, known);
+              setUp(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f, known);
             }
-            f.centre_count += centreCountShift(edges.edges[*it], edges.triangles.data(), f,
-                                               light_centre, eye_position);
+            bool zfail = false;
+            f.centre_count +=
+                quadCountShift(edges.edges[*it], replay, scratch.px[i], scratch.py[i], f, zfail);
+            if (zfail) {
+              f.centre_count += centreCountShift(edges.edges[*it], edges.triangles.data(), f,
+                                                 light_centre, eye_position);
+            }
             if (!edgeAtPixel(edges.edges[*it], edges.triangles.data(), f, samples_, pixel_edge,
                              weight))
               continue;
@@ -328,8 +370,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             if (t.id == f.primitive) continue;
             if (!f.ready) {
               float known = 0.0f;  // never set: a clear pixel is outside the light
-              setupPixel(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f.stencil,
-                         origins, light, scratch.origin_triangle, f, known);
+              setUp(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f, known);
             }
             // Outside the cone, or in front of the light, where the edge sums count it.
             if (classifyCutting(t.v[0], t.v[1], t.v[2], f) != CuttingPlace::Across) continue;

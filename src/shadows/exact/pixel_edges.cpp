@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/pseudo_angle.h"
+#include "raster/rasterizer.h"
 
 namespace penumbra {
 
@@ -117,7 +118,7 @@ bool pointOnTriangle(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3
 // Sets up the frame of a pixel; false when its visibility is already known (`known`).
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
                 const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
-                PixelFrame& f, float& known) {
+                bool replayed, PixelFrame& f, float& known) {
   const dvec3 c(light.center);
   const double r = light.radius;
   f.ready = true;
@@ -144,12 +145,98 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   // depth-buffer point lies on it (the segment from the point to the centre then starts on it);
   // a point the rasterizer's snapping put just past one of its edges is outside its volume.
   bool counted = f.start.intoSurface(c);
-  if (counted && triangle.primitive == primitive && triangle.length > 0.0)
-    counted = pointOnTriangle(f.start.depth_point, triangle.a, triangle.b, triangle.c);
+  if (triangle.primitive == primitive && triangle.length > 0.0) {
+    if (replayed) {
+      CuttingTriangle visible;
+      visible.id = primitive;
+      visible.v[0] = triangle.a;
+      visible.v[1] = triangle.b;
+      visible.v[2] = triangle.c;
+      counted = segmentHitsTriangle(f.p, c - f.p, 1.0 - kTfarShrink, visible);
+    } else if (counted) {
+      counted = pointOnTriangle(f.start.depth_point, triangle.a, triangle.b, triangle.c);
+    }
+  }
   f.centre_count = stencil - (counted ? 1 : 0);
   f.reach = 0;
   return true;
 }
+int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, int y,
+                       const PixelFrame& f, bool& zfail) {
+  zfail = false;
+  const StencilQuads& quads = replay.quads;
+  if (e.scene_edge >= quads.first.size() - 1) return 0;
+  const uint32_t begin = quads.first[e.scene_edge], end = quads.first[e.scene_edge + 1];
+  if (begin == end) return 0;  // no quad: no silhouette from the centre, or off screen
+  const SetupTriangle& any = quads.setup[quads.pieces[begin]];
+  if ((any.flags & kZFail) != 0) {
+    zfail = true;
+    return 0;
+  }
+  // Only a quad whose plane passes by the two points can count differently at them; elsewhere
+  // along the eye's ray the stencil's decision stands (its quads' borders are snapped, and a
+  // border near the pixel is shared with a neighbouring quad whose decision pairs with it).
+  {
+    const dvec3 ca = e.a - replay.centre, cb = e.b - replay.centre;
+    const dvec3 m = glm::cross(ca, cb);
+    const double m_length = glm::length(m);
+    if (!(m_length > 0.0)) return 0;
+    const double reach = 4.0 * glm::length(f.p - f.start.depth_point) +
+                         1e-6 * glm::length(f.p - replay.eye_position);
+    const double to_origin = std::fabs(glm::dot(m, f.p - replay.centre)) / m_length;
+    const double to_depth_point =
+        std::fabs(glm::dot(m, f.start.depth_point - replay.centre)) / m_length;
+    if (to_origin > reach && to_depth_point > reach) return 0;
+  }
+  int32_t stencil = 0;
+  for (uint32_t k = begin; k < end; ++k) {
+    stencil += stencilContributionAt(quads.setup[quads.pieces[k]], x, y, replay.eye.depth,
+                                     &replay.eye.primitive);
+  }
+  // The quad: the points c + alpha (a - c) + beta (b - c), alpha, beta >= 0, alpha + beta >= 1.
+  // A z-pass count adds the polygon's contribution where the segment from the eye to the point
+  // crosses it, as the stencil does at the pixel's own point. The stencil leaves out the quads
+  // of the visible triangle's edges when it faces the eye and the centre alike (owners): the
+  // quad then lies behind its plane and no segment from the eye to a point on it crosses it.
+  int32_t exact = 0;
+  const bool owned = f.primitive == any.owners[0] || f.primitive == any.owners[1];
+  const dvec3 ca = e.a - replay.centre, cb = e.b - replay.centre;
+  const dvec3 m = glm::cross(ca, cb);
+  const double at_eye = glm::dot(m, replay.eye_position - replay.centre);
+  const double at_point = glm::dot(m, f.p - replay.centre);
+  const double mm = glm::dot(m, m);
+  if (!owned && (at_eye > 0.0) != (at_point > 0.0) && at_point != 0.0 && mm > 0.0) {
+    const dvec3 x_world =
+        replay.eye_position + (at_eye / (at_eye - at_point)) * (f.p - replay.eye_position);
+    const dvec3 v = x_world - replay.centre;
+    const double alpha = glm::dot(glm::cross(v, cb), m) / mm;
+    const double beta = glm::dot(glm::cross(ca, v), m) / mm;
+    if (alpha >= 0.0 && beta >= 0.0 && alpha + beta >= 1.0 &&
+        glm::dot(replay.forward, x_world - replay.eye_position) > replay.near_plane)
+      exact = any.payload * any.facing;
+  }
+  return exact - stencil;
+}
+
+int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours,
+                     const PixelFrame& f, const dvec3& centre, const dvec3& eye_position) {
+  int32_t shift = 0;
+  for (const uint32_t id : neighbours) {
+    const auto [m, t] = scene.locateTriangle(id);
+    const Mesh& mesh = scene.meshes[m];
+    CuttingTriangle tri;
+    tri.id = id;
+    for (int k = 0; k < 3; ++k) tri.v[k] = dvec3(mesh.vertex(t, k));
+    if (!segmentHitsTriangle(eye_position, f.p - eye_position, 1.0, tri)) continue;
+    const dvec3 n = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
+    const double at_eye = glm::dot(n, eye_position - tri.v[0]);
+    const double at_centre = glm::dot(n, centre - tri.v[0]);
+    if (at_centre == 0.0) continue;  // edge-on to the centre: no volume
+    shift += (at_eye > 0.0) == (at_centre > 0.0) ? 1 : -1;
+  }
+  return shift;
+}
+
 int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
                          const PixelFrame& f, const dvec3& centre, const dvec3& eye) {
   // The quad is the part of the plane through the centre and the edge beyond the edge: the

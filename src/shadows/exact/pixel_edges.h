@@ -7,6 +7,7 @@
 #include "core/math.h"
 #include "core/view.h"
 #include "raster/depth_buffer.h"
+#include "render/eye_pass.h"
 #include "scene/light.h"
 #include "scene/scene.h"
 #include "shadows/exact/light_samples.h"
@@ -14,6 +15,7 @@
 #include "shadows/exact/sample_kernel.h"
 #include "shadows/reference/light_sampling.h"
 #include "shadows/reference/ray_origin.h"
+#include "shadows/volume/shadow_stencil.h"
 
 namespace penumbra {
 
@@ -72,12 +74,16 @@ bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const Cut
 
 // Sets up the frame of a pixel; false when its visibility is already known (`known`).
 // `triangle`: the work item's last visible triangle, for RayOrigins::start.
+// `replayed`: the visible triangle's mesh is a z-pass volume whose quads quadCountShift moves to
+// the shaded point, and the visible triangle is taken out as the segment from there to the
+// light centre crosses it; else as the stencil counted it at the depth-buffer point.
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
                 const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
-                PixelFrame& f, float& known);
+                bool replayed, PixelFrame& f, float& known);
 
-// How the count at the light centre changes from the pixel's depth-buffer point, where the
-// stencil counted it, to the shaded point f.p the oracle's rays leave from: by the edge's
+// For a z-fail volume's edge (quadCountShift replays z-pass quads only): how the count at the
+// light centre changes from the pixel's depth-buffer point, where the stencil counted it, to
+// the shaded point f.p the oracle's rays leave from, in double: by the edge's
 // triangles that the segment toward the centre starts or stops crossing when it sweeps over
 // the edge, which happens where the path between the two points crosses the edge's shadow
 // quad from the centre. For an edge of the visible triangle (the stencil skips its quad at the
@@ -85,6 +91,33 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
 // triangle, often right at that edge) the neighbours are tested directly from both points.
 int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
                          const PixelFrame& f, const dvec3& centre, const dvec3& eye);
+
+// The stencil's count moved from pixel (x, y)'s depth-buffer point to the shaded point f.p over
+// the quad of edge e, for a z-pass volume: the stencil's own decision for each piece of the quad
+// at the pixel, replayed (rasterizer.h: stencilContributionAt), against whether the segment from
+// the eye to f.p crosses the quad, in double. Beside the visible triangle's own count, this is
+// all that separates the stencil from the count at f.p: a quad's decision can differ between
+// the two points only where it passes between or through them, inside the edge's region.
+// `zfail` is set for a z-fail volume's quad, which this leaves to centreCountShift (its caps
+// would need the same).
+struct QuadReplay {
+  const StencilQuads& quads;
+  const EyeBuffers& eye;
+  dvec3 centre, eye_position;
+  dvec3 forward;      // the view direction (unit), for the near plane
+  double near_plane;  // crossings nearer the eye than this are clipped away by the stencil
+};
+int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, int y,
+                       const PixelFrame& f, bool& zfail);
+
+// The rest of what separates the stencil from the count at f.p on a z-pass volume: the caps.
+// The depth-buffer point is seen from the eye, but the origin, snapped onto the visible
+// triangle and lifted off it, can lie just behind a neighbouring triangle (at a concave fold);
+// the segment from the eye then crosses that triangle, which enters (from the light centre's
+// side, +1) or leaves (-1) its volume: the count a z-pass stencil would have there.
+// `neighbours`: the triangles sharing a vertex with the visible one (VertexRings).
+int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours,
+                     const PixelFrame& f, const dvec3& centre, const dvec3& eye_position);
 
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.

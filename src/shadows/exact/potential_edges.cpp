@@ -39,7 +39,7 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
   const dvec3 c(light.center);
   const double r = light.radius;
   PotentialEdges out;
-  uint32_t first_id = 0;
+  uint32_t first_id = 0, first_edge = 0;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     const EdgeAdjacency& adjacency = scene.adjacency[m];
@@ -116,7 +116,8 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
           part.triangles.resize(first);
           continue;
         }
-        part.edges.push_back(PotentialEdge{a, b, uint32_t(first), uint32_t(count)});
+        part.edges.push_back(
+            PotentialEdge{a, b, uint32_t(first), uint32_t(count), first_edge + uint32_t(i)});
       }
     });
     for (PotentialEdges& part : parts) {
@@ -128,6 +129,7 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
       out.triangles.insert(out.triangles.end(), part.triangles.begin(), part.triangles.end());
     }
     first_id += uint32_t(mesh.triangleCount());
+    first_edge += uint32_t(edge_count);
   }
   return out;
 }

@@ -49,6 +49,8 @@ struct EdgeTriangle {
 struct PotentialEdge {
   dvec3 a, b;
   uint32_t first_triangle, triangle_count;  // into PotentialEdges::triangles
+  // Its number among the scene's edges (shadow_stencil.h: sceneEdgeOffsets), or none.
+  uint32_t scene_edge = 0xffffffffu;
 };
 
 // A triangle whose plane cuts the light ball (a wall through the light, a floor the light sinks

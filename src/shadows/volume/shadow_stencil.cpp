@@ -33,9 +33,13 @@ bool eyeOnCentreSide(const Mesh& mesh, size_t t, const dvec3& eye, const dvec3& 
 // mesh) it runs within a hair of the whole triangle, so the float depth test flips pixel by
 // pixel: z-fighting that darkens or lights those pixels against the ray-traced answer. z-fail
 // quads count from behind the point, where they can lie: they keep the depth test.
+// `edge_of`, when given, receives every polygon's scene edge (first_edge + the adjacency
+// edge; kNoSceneEdge for a cap).
+constexpr uint32_t kNoSceneEdge = 0xffffffffu;
 void appendVolumePolygons(const Mesh& mesh, const EdgeAdjacency& adjacency, uint32_t first_id,
                           const vec3& centre, const View& view, bool skip_own_quads,
-                          CasterVolume& volume, ClipTriangles& out) {
+                          CasterVolume& volume, ClipTriangles& out, uint32_t first_edge,
+                          std::vector<uint32_t>* edge_of) {
   appendExtrudedVertices(mesh, centre, view, volume, out);
   const dvec3 eye(view.eye), light(centre);
   const uint32_t finite = volume.finite, infinite = volume.infinite;
@@ -55,20 +59,34 @@ void appendVolumePolygons(const Mesh& mesh, const EdgeAdjacency& adjacency, uint
                  owner[1]);
     out.addOwned(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags,
                  owner[0], owner[1]);
+    if (edge_of != nullptr) edge_of->insert(edge_of->end(), 2, first_edge + e.edge);
   }
   // z-pass: caps are never in front of a visible point (volume_technique.cpp).
   if (!volume.zfail) return;
   forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
     out.add(a, b, c, weight, flags);
+    if (edge_of != nullptr) edge_of->push_back(kNoSceneEdge);
   });
 }
 
 }  // namespace
 
+std::vector<uint32_t> sceneEdgeOffsets(const Scene& scene) {
+  std::vector<uint32_t> offsets{0};
+  for (const EdgeAdjacency& a : scene.adjacency)
+    offsets.push_back(offsets.back() + uint32_t(a.edges.size()));
+  return offsets;
+}
+
 Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View& view,
                              const EyeBuffers& eye, const ShadowStencilOptions& options,
                              Stats& stats) {
   ClipTriangles polygons(eye.clip_vertices);
+  StencilQuads* quads = options.quads;
+  std::vector<uint32_t> edge_of;  // per polygon, with `quads`
+  const std::vector<uint32_t> edge_offsets =
+      quads != nullptr ? sceneEdgeOffsets(scene) : std::vector<uint32_t>();
+  if (quads != nullptr) quads->zfail.assign(scene.meshes.size(), 0);
   {
     PassTimer timer(stats, "silhouette");
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -76,8 +94,11 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
       CasterVolume volume =
           casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
       stats.silhouette_edges += volume.silhouette.edges.size();
+      if (quads != nullptr) quads->zfail[m] = volume.zfail ? 1 : 0;
       appendVolumePolygons(scene.meshes[m], scene.adjacency[m], scene.triangle_offsets[m],
-                           centre, view, options.skip_own_quads, volume, polygons);
+                           centre, view, options.skip_own_quads, volume, polygons,
+                           quads != nullptr ? edge_offsets[m] : 0,
+                           quads != nullptr ? &edge_of : nullptr);
     }
   }
   Image<int32_t> stencil(view.width, view.height, 0);
@@ -87,7 +108,23 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
     stencil_options.simd = options.simd;
     stencil_options.two_level = options.two_level_stencil;
     if (options.skip_own_quads) stencil_options.primitive = &eye.primitive;
-    rasterizeStencil(polygons, eye.depth, stencil, stats, stencil_options);
+    std::vector<uint32_t> sources;
+    std::vector<SetupTriangle> setup = setupTriangles(polygons, view.width, view.height,
+                                                      quads != nullptr ? &sources : nullptr);
+    stats.triangles += setup.size();
+    rasterizeStencil(setup, eye.depth, stencil, stats, stencil_options);
+    if (quads != nullptr) {
+      // Group the pieces by scene edge (counting sort; caps are left out).
+      quads->first.assign(edge_offsets.back() + 1, 0);
+      for (const uint32_t source : sources)
+        if (edge_of[source] != kNoSceneEdge) ++quads->first[edge_of[source] + 1];
+      for (size_t e = 1; e < quads->first.size(); ++e) quads->first[e] += quads->first[e - 1];
+      quads->pieces.assign(quads->first.back(), 0);
+      std::vector<uint32_t> next(quads->first.begin(), quads->first.end() - 1);
+      for (size_t k = 0; k < sources.size(); ++k)
+        if (edge_of[sources[k]] != kNoSceneEdge) quads->pieces[next[edge_of[sources[k]]]++] = uint32_t(k);
+      quads->setup = std::move(setup);
+    }
   }
   return stencil;
 }

@@ -11,12 +11,26 @@
 #include "core/stats.h"
 #include "core/view.h"
 #include "raster/depth_buffer.h"
+#include "raster/triangle_setup.h"
 #include "scene/scene.h"
 #include "shadows/silhouette.h"
 #include "shadows/technique.h"
 #include "shadows/volume_options.h"
 
 namespace penumbra {
+
+// The volume polygons as the stencil pass set them up, for a pass that must know what the
+// stencil decided at a pixel (exact_technique.cpp, with rasterizer.h's stencilContributionAt):
+// per scene edge (the edges of Scene::adjacency numbered mesh after mesh, from
+// sceneEdgeOffsets) the set-up pieces of its quad, and per mesh whether its volume was z-fail.
+struct StencilQuads {
+  std::vector<SetupTriangle> setup;  // every polygon drawn, quads and caps
+  std::vector<uint32_t> first;       // per scene edge, then the end: into `pieces`
+  std::vector<uint32_t> pieces;      // indices into `setup`, grouped by scene edge
+  std::vector<uint8_t> zfail;        // per mesh (0 for a mesh that casts nothing)
+};
+// The first scene-edge number of every mesh, then the total.
+std::vector<uint32_t> sceneEdgeOffsets(const Scene& scene);
 
 struct ShadowStencilOptions {
   VolumeMode mode = VolumeMode::Auto;
@@ -30,6 +44,8 @@ struct ShadowStencilOptions {
   // Per mesh, whether it casts (null: every mesh): the soft techniques' second pass over the
   // open meshes' other facing draws only those meshes (silhouette.h).
   const std::vector<uint8_t>* casting_meshes = nullptr;
+  // When set, receives the polygons as set up (StencilQuads).
+  StencilQuads* quads = nullptr;
 };
 
 // Fills the passes "silhouette" and "volumes" of `stats` and its counters.
