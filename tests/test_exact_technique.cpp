@@ -159,13 +159,11 @@ bool sharedModelsPresent() {
 // (hundreds of pixels strictly between 0 and 1 in the oracle) and at least 98 % of them must
 // match, so the test cannot pass on hard shadows alone.
 //
-// The differing pixels are ties of the centre count: the stencil is taken at the depth-buffer
-// point, the oracle's ray starts at that point snapped onto the visible triangle, and where a
-// hard shadow boundary runs between the two (at contacts and geometric edges) the hard `volume`
-// differs from the hard oracle on the same pixel too. year2002 is rendered at 241 x 161: at
-// 240 x 160 several of its box edges project exactly onto pixel centres, and 13 such pixels
-// tie in the hard volume alone (exact: 15 of 28279, 0.053 %; at 241 x 161: 4, at 640 x 427:
-// 22 of 201060, 0.011 %).
+// The differing pixels are ties: an origin within rounding of a quad or a neighbour's plane,
+// or a sample on an edge's projection (docs/exact-soft-shadows.md, "What is not exact"; the
+// stencil's count is moved from the depth-buffer point to the oracle's origin first). year2002
+// is rendered at 241 x 161: at 240 x 160 several of its box edges project exactly onto pixel
+// centres, where the hard volume and the hard oracle tie too.
 TEST(ExactTechnique, MatchesTheOracleOnTheSameSamples) {
   constexpr int kSamples = 64;
   for (const std::string& name : builtinSceneNames()) {
