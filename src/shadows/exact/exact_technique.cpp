@@ -221,7 +221,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     const QuadReplay replay{
         quads, eye, light_centre, eye_position,
         -glm::normalize(dvec3(view.view[0][2], view.view[1][2], view.view[2][2])),
-        double(view.near_plane)};
+        double(view.near_plane),
+        std::any_of(quads.zfail.begin(), quads.zfail.end(), [](uint8_t z) { return z != 0; })};
     // Whether the visible triangle's mesh was drawn z-pass (its quads replayed, QuadReplay).
     const auto replayed = [&](uint32_t primitive) {
       return quads.zfail[scene_.locateTriangle(primitive).first] == 0;
@@ -253,6 +254,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         if (!setupPixel(px, py, depth, id, f.stencil, origins, light, scratch.origin_triangle,
                         z_pass, f, known))
           return false;
+        const double apart = glm::length(f.p - f.start.depth_point);
+        f.quad_reach = 4.0 * apart + 1e-6 * glm::length(f.p - eye_position);
         // Only an origin near the triangle's border can hide behind a neighbour: the eye sees
         // the depth-buffer point, and a neighbour between the two rays comes within their
         // distance of the origin.
@@ -263,7 +266,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           for (int k = 0; k < 3; ++k)
             border = std::min(border, glm::dot(f.p - corners[k], t.inward[k]));
         }
-        if (z_pass && border <= 8.0 * glm::length(f.p - f.start.depth_point)) {
+        if (z_pass && border <= 8.0 * apart) {
           rings_.neighbours(id, scratch.neighbours);
           f.centre_count +=
               capCrossings(scene_, scratch.neighbours, f, light_centre, eye_position);

@@ -165,6 +165,20 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
                        const PixelFrame& f, bool& zfail) {
   zfail = false;
   const StencilQuads& quads = replay.quads;
+  // Only a quad whose plane passes by the two points can count differently at them; elsewhere
+  // along the eye's ray the stencil's decision stands (its quads' borders are snapped, and a
+  // border near the pixel is shared with a neighbouring quad whose decision pairs with it).
+  // Tested first, from the edge alone: most candidate edges stop here. (With a z-fail volume in
+  // the frame, its edges must reach centreCountShift whatever their plane: looked up first.)
+  const dvec3 ca = e.a - replay.centre, cb = e.b - replay.centre;
+  const dvec3 m = glm::cross(ca, cb);
+  const double mm = glm::dot(m, m);
+  const double at_point = glm::dot(m, f.p - replay.centre);
+  const double at_depth_point = glm::dot(m, f.start.depth_point - replay.centre);
+  const double reach2 = f.quad_reach * f.quad_reach * mm;
+  const bool far = !(mm > 0.0) ||
+                   (at_point * at_point > reach2 && at_depth_point * at_depth_point > reach2);
+  if (far && !replay.any_zfail) return 0;
   if (e.scene_edge >= quads.first.size() - 1) return 0;
   const uint32_t begin = quads.first[e.scene_edge], end = quads.first[e.scene_edge + 1];
   if (begin == end) return 0;  // no quad: no silhouette from the centre, or off screen
@@ -173,21 +187,7 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
     zfail = true;
     return 0;
   }
-  // Only a quad whose plane passes by the two points can count differently at them; elsewhere
-  // along the eye's ray the stencil's decision stands (its quads' borders are snapped, and a
-  // border near the pixel is shared with a neighbouring quad whose decision pairs with it).
-  {
-    const dvec3 ca = e.a - replay.centre, cb = e.b - replay.centre;
-    const dvec3 m = glm::cross(ca, cb);
-    const double m_length = glm::length(m);
-    if (!(m_length > 0.0)) return 0;
-    const double reach = 4.0 * glm::length(f.p - f.start.depth_point) +
-                         1e-6 * glm::length(f.p - replay.eye_position);
-    const double to_origin = std::fabs(glm::dot(m, f.p - replay.centre)) / m_length;
-    const double to_depth_point =
-        std::fabs(glm::dot(m, f.start.depth_point - replay.centre)) / m_length;
-    if (to_origin > reach && to_depth_point > reach) return 0;
-  }
+  if (far) return 0;
   int32_t stencil = 0;
   for (uint32_t k = begin; k < end; ++k) {
     stencil += stencilContributionAt(quads.setup[quads.pieces[k]], x, y, replay.eye.depth,
@@ -200,12 +200,8 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
   // quad then lies behind its plane and no segment from the eye to a point on it crosses it.
   int32_t exact = 0;
   const bool owned = f.primitive == any.owners[0] || f.primitive == any.owners[1];
-  const dvec3 ca = e.a - replay.centre, cb = e.b - replay.centre;
-  const dvec3 m = glm::cross(ca, cb);
   const double at_eye = glm::dot(m, replay.eye_position - replay.centre);
-  const double at_point = glm::dot(m, f.p - replay.centre);
-  const double mm = glm::dot(m, m);
-  if (!owned && (at_eye > 0.0) != (at_point > 0.0) && at_point != 0.0 && mm > 0.0) {
+  if (!owned && (at_eye > 0.0) != (at_point > 0.0) && at_point != 0.0) {
     const dvec3 x_world =
         replay.eye_position + (at_eye / (at_eye - at_point)) * (f.p - replay.eye_position);
     const dvec3 v = x_world - replay.centre;

@@ -36,6 +36,9 @@ struct PixelFrame {
   double light_near = 0;    // |c - p| - r: the light's nearest depth along the axis
   double sin_max = 0, cos_max = 1;  // of the cone's half-angle
   int32_t centre_count = 0;  // D at the centre, the visible triangle left out
+  // How near the two points a quad's plane must pass to be replayed (quadCountShift): a few
+  // times their distance, and the float rounding of the depth-buffer point.
+  double quad_reach = 0;
   int64_t reach = 0;        // how far the edges can move any sample's count from the centre's
 };
 
@@ -106,6 +109,7 @@ struct QuadReplay {
   dvec3 centre, eye_position;
   dvec3 forward;      // the view direction (unit), for the near plane
   double near_plane;  // crossings nearer the eye than this are clipped away by the stencil
+  bool any_zfail;     // some mesh's volume was drawn z-fail
 };
 int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, int y,
                        const PixelFrame& f, bool& zfail);
