@@ -68,21 +68,25 @@ TEST(ExactCentreShift, RoundingTiesAreLeftAlone) {
 // An edge of the visible triangle (a floor, x < 0) and a neighbour across it. The oracle's
 // origin sits on the floor by the edge; the depth-buffer point, which the rasterizer's snapping
 // put just past the edge, lies beyond the neighbour's plane or on the neighbour itself.
-PotentialEdge cornerEdge() { return PotentialEdge{dvec3(0, 0, -1), dvec3(0, 0, 1), 0, 2}; }
 const EdgeTriangle kFloor{7, true, false, 1, dvec3(-1, 0, 0), dvec3(0, 1, 0), 0.0};
+// The shift across the floor's edge x = 0 with `neighbour` beyond it, for a depth-buffer point
+// just past the edge and the origin `origin` on the floor.
+int32_t floorEdgeShift(const EdgeTriangle& neighbour, const dvec3& origin, const dvec3& centre) {
+  const std::vector<EdgeTriangle> triangles{kFloor, neighbour};
+  PixelFrame f;
+  f.primitive = kFloor.id;
+  f.start.depth_point = dvec3(1e-4, 0, 0);
+  f.p = origin;
+  return centreCountShift(PotentialEdge{dvec3(0, 0, -1), dvec3(0, 0, 1), 0, 2}, triangles.data(),
+                          f, centre, dvec3(-4, 5, 3));
+}
 
 // A wall rising at x = 0 with the light behind it: segments from the origin toward the centre
 // cross the wall, those from the depth-buffer point behind it do not: +1. If this failed,
 // floor pixels along the foot of a wall that hides the light would be lit.
 TEST(ExactCentreShift, NeighbourBetweenTheOriginAndTheCentre) {
-  const std::vector<EdgeTriangle> triangles{
-      kFloor, EdgeTriangle{8, true, false, 1, dvec3(0, 1, 0), dvec3(1, 0, 0), 0.0}};
-  PixelFrame f;
-  f.primitive = 7;
-  f.start.depth_point = dvec3(1e-4, 0, 0);
-  f.p = dvec3(-1e-4, 1e-6, 0);
-  EXPECT_EQ(centreCountShift(cornerEdge(), triangles.data(), f, dvec3(5, 3, 0), dvec3(-4, 5, 3)),
-            1);
+  const EdgeTriangle wall{8, true, false, 1, dvec3(0, 1, 0), dvec3(1, 0, 0), 0.0};
+  EXPECT_EQ(floorEdgeShift(wall, dvec3(-1e-4, 1e-6, 0), dvec3(5, 3, 0)), 1);
 }
 
 // The floor continues flat past the edge (a neighbour in its plane) and the light is below
@@ -91,15 +95,8 @@ TEST(ExactCentreShift, NeighbourBetweenTheOriginAndTheCentre) {
 // If this failed, pixels along the seam of a flat or smooth surface at its terminator would
 // stay dark where the oracle sees part of the light.
 TEST(ExactCentreShift, DepthPointOnTheNeighbourCountedAsTheStencilDid) {
-  const std::vector<EdgeTriangle> triangles{
-      kFloor, EdgeTriangle{8, false, false, 1, dvec3(1, 0, 0), dvec3(0, 1, 0), 0.0}};
-  PixelFrame f;
-  f.primitive = 7;
-  f.start.depth_point = dvec3(1e-4, 0, 0);
-  f.p = dvec3(-1e-4, 1e-5, 0);
-  EXPECT_EQ(
-      centreCountShift(cornerEdge(), triangles.data(), f, dvec3(0.5, -3, 0), dvec3(-4, 5, 3)),
-      -1);
+  const EdgeTriangle flat{8, false, false, 1, dvec3(1, 0, 0), dvec3(0, 1, 0), 0.0};
+  EXPECT_EQ(floorEdgeShift(flat, dvec3(-1e-4, 1e-5, 0), dvec3(0.5, -3, 0)), -1);
 }
 
 // An edge of two triangles on opposite sides of the quad's plane is no silhouette from the
