@@ -141,9 +141,12 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   f.light_near = glm::length(c - f.p) - r;
   f.cos_max = 1.0 - omc;
   f.sin_max = std::sqrt(omc * (2.0 - omc));
-  // The stencil counted the visible triangle exactly when the centre is behind it and the
-  // depth-buffer point lies on it (the segment from the point to the centre then starts on it);
-  // a point the rasterizer's snapping put just past one of its edges is outside its volume.
+  // The visible triangle, left out of the count. `replayed`: the count is moved to the origin
+  // (quadCountShift, capCrossings), so it holds the triangle when the origin's segment to the
+  // centre crosses it. Otherwise it is the stencil's at the depth-buffer point, which counted
+  // the triangle when the centre is behind it and the point lies on it (the segment from the
+  // point to the centre then starts on it; a point the rasterizer's snapping put just past one
+  // of its edges is outside its volume).
   bool counted = f.start.intoSurface(c);
   if (triangle.primitive == primitive && triangle.length > 0.0) {
     if (replayed) {
@@ -179,7 +182,7 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
   const bool far = !(mm > 0.0) ||
                    (at_point * at_point > reach2 && at_depth_point * at_depth_point > reach2);
   if (far && !replay.any_zfail) return 0;
-  if (e.scene_edge >= quads.first.size() - 1) return 0;
+  if (size_t(e.scene_edge) + 1 >= quads.first.size()) return 0;
   const uint32_t begin = quads.first[e.scene_edge], end = quads.first[e.scene_edge + 1];
   if (begin == end) return 0;  // no quad: no silhouette from the centre, or off screen
   const SetupTriangle& any = quads.setup[quads.pieces[begin]];

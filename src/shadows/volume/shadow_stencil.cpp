@@ -121,8 +121,10 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
       for (size_t e = 1; e < quads->first.size(); ++e) quads->first[e] += quads->first[e - 1];
       quads->pieces.assign(quads->first.back(), 0);
       std::vector<uint32_t> next(quads->first.begin(), quads->first.end() - 1);
-      for (size_t k = 0; k < sources.size(); ++k)
-        if (edge_of[sources[k]] != kNoSceneEdge) quads->pieces[next[edge_of[sources[k]]]++] = uint32_t(k);
+      for (size_t k = 0; k < sources.size(); ++k) {
+        const uint32_t edge = edge_of[sources[k]];
+        if (edge != kNoSceneEdge) quads->pieces[next[edge]++] = uint32_t(k);
+      }
       quads->setup = std::move(setup);
     }
   }
