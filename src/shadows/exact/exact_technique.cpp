@@ -66,7 +66,7 @@ struct Scratch {
   std::vector<const CuttingTriangle*> cutting[kBlockPixels];
   OriginTriangle origin_triangle;  // the last visible triangle set up (RayOrigins::start)
   std::vector<uint32_t> neighbours;  // of the visible triangle (VertexRings)
-  explicit Scratch(const SampleSet& s)
+  explicit Scratch(const SortedSamples& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
         into(size_t(s.n)), cone_samples(size_t(s.n)) {}
 };
@@ -95,7 +95,7 @@ class ExactSoftShadows final : public PreparedTechnique {
   ExactOptions options_;
   const Scene& scene_;
   Bounds3 bounds_;  // of every visible point (binEdges)
-  SampleSet samples_;
+  SortedSamples samples_;
   VertexRings rings_;
 };
 

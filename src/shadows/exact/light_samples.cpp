@@ -6,8 +6,8 @@
 
 namespace penumbra {
 
-SampleSet makeSampleSet(int n, uint64_t seed) {
-  SampleSet set;
+SortedSamples makeSampleSet(int n, uint64_t seed) {
+  SortedSamples set;
   set.n = n;
   set.padded = (size_t(n) + kSampleBlock - 1) / kSampleBlock * kSampleBlock;
   std::vector<vec2> square(static_cast<size_t>(n));
@@ -32,7 +32,7 @@ SampleSet makeSampleSet(int n, uint64_t seed) {
   return set;
 }
 
-SampleRuns sampleRuns(const SampleSet& set, double from, double to) {
+SampleRuns sampleRuns(const SortedSamples& set, double from, double to) {
   // Far wider than the float error of the kernel's sector lines (some 1e-7 relative); the
   // pseudo-angle grows at least half as fast as the angle.
   constexpr double kSlack = 1e-5;

@@ -14,7 +14,7 @@ namespace penumbra {
 // around the light centre on the sample plane is its disk angle at every pixel (only its
 // distance from the centre depends on the pixel), so the samples an edge's sector can hold are
 // one or two runs of this order: the pass over the samples visits only those blocks.
-struct SampleSet {
+struct SortedSamples {
   int n = 0;
   size_t padded = 0;
   std::vector<DiskPoint> disk;  // n entries
@@ -24,13 +24,13 @@ struct SampleSet {
 };
 
 // The set of n samples for `seed` (fixedSamples), as the oracle's `--sample-set fixed` takes it.
-SampleSet makeSampleSet(int n, uint64_t seed);
+SortedSamples makeSampleSet(int n, uint64_t seed);
 
 // The blocks of samples whose pseudo-angle may lie in [from, to] (from in [0, 4), to - from
 // < 2, the half turn; to may pass 4 and wrap): one or two runs [begin, end) of whole blocks.
 struct SampleRuns {
   uint32_t begin[2] = {0, 0}, end[2] = {0, 0};
 };
-SampleRuns sampleRuns(const SampleSet& set, double from, double to);
+SampleRuns sampleRuns(const SortedSamples& set, double from, double to);
 
 }  // namespace penumbra

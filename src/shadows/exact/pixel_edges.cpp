@@ -66,7 +66,7 @@ bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light&
   return !same_side;
 }
 
-SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SampleSet& samples) {
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SortedSamples& samples) {
   SampleRuns all;
   all.end[0] = uint32_t(samples.padded);
   double angle[3];
@@ -312,7 +312,7 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.
 bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
-                 const SampleSet& samples, PixelEdge& pixel_edge, int32_t& weight_out) {
+                 const SortedSamples& samples, PixelEdge& pixel_edge, int32_t& weight_out) {
   SampleEdge& out = pixel_edge.edge;
   const dvec3& p = f.p;
   dvec3 a = e.a - p, b = e.b - p;

@@ -70,7 +70,7 @@ bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light&
 
 // The blocks of samples whose angle around the light centre the triangle's projection from the
 // point can reach (all of them when it surrounds the centre or reaches behind the point).
-SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SampleSet& samples);
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SortedSamples& samples);
 
 // Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
 bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t);
@@ -126,6 +126,6 @@ int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.
 bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
-                 const SampleSet& samples, PixelEdge& pixel_edge, int32_t& weight_out);
+                 const SortedSamples& samples, PixelEdge& pixel_edge, int32_t& weight_out);
 
 }  // namespace penumbra
