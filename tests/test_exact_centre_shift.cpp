@@ -20,7 +20,8 @@ namespace test_exact_centre_shift {
 struct HalfPlane {
   dvec3 centre{0.0, 10.0, 0.0};
   dvec3 eye{5.0, 3.0, 5.0};
-  PotentialEdge edge{dvec3(0.0, 2.0, -1.0), dvec3(0.0, 2.0, 1.0), 0, 1};
+  // (a - c) x (b - c) = (-16, 0, 0): the quad's plane x = 0 (potentialEdges sets it).
+  PotentialEdge edge{dvec3(0.0, 2.0, -1.0), dvec3(0.0, 2.0, 1.0), 0, 1, 0, dvec3(-16, 0, 0)};
   std::vector<EdgeTriangle> triangles{
       EdgeTriangle{7, true, false, 1, dvec3(-1.0, 2.0, 0.0), dvec3(0.0, 1.0, 0.0), -2.0}};
 

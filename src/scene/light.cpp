@@ -8,9 +8,6 @@
 
 namespace penumbra {
 
-namespace {
-}  // namespace
-
 vec3 LightTexture::at(vec2 st) const {
   const int i = std::clamp(int(std::floor(st.x * float(width))), 0, width - 1);
   const int j = std::clamp(int(std::floor(st.y * float(height))), 0, height - 1);

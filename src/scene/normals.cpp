@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "scene/vertex_triangles.h"
+
 namespace penumbra {
 
 namespace {
@@ -51,15 +53,9 @@ void computeCornerNormals(Mesh& mesh, float crease_degrees) {
     }
   }
 
-  // Triangles around each vertex (CSR).
-  std::vector<uint32_t> start(vertex_count + 1, 0);
-  for (uint32_t v : mesh.indices) ++start[v + 1];
-  for (size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-  std::vector<uint32_t> around(mesh.indices.size());
-  {
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < mesh.indices.size(); ++i) around[fill[mesh.indices[i]]++] = uint32_t(i / 3);
-  }
+  const VertexTriangles rings = trianglesAroundVertices(mesh);
+  const std::vector<uint32_t>& start = rings.start;
+  const std::vector<uint32_t>& around = rings.around;
 
   std::vector<vec3> vertex_average(vertex_count, vec3(0.0f));
   for (size_t v = 0; v < vertex_count; ++v) {

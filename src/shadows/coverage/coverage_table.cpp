@@ -8,9 +8,6 @@
 #include "core/parallel.h"
 
 namespace penumbra {
-namespace {
-}  // namespace
-
 CoverageTableData::CoverageTableData(LightOutline outline, int n) : outline_(outline), n_(n) {
   PENUMBRA_CHECK(n >= kMinCoverageTableSize && n <= kMaxCoverageTableSize,
                  "coverage table size {} is outside {}..{}", n, kMinCoverageTableSize,

@@ -225,7 +225,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         std::any_of(quads.zfail.begin(), quads.zfail.end(), [](uint8_t z) { return z != 0; })};
     // Whether the visible triangle's mesh was drawn z-pass (its quads replayed, QuadReplay).
     const auto replayed = [&](uint32_t primitive) {
-      return quads.zfail[scene_.locateTriangle(primitive).first] == 0;
+      return !replay.any_zfail || quads.zfail[scene_.locateTriangle(primitive).first] == 0;
     };
     // A pixel footprint at unit distance, at the image centre (ray_origin.h).
     const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);

@@ -173,8 +173,7 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
   // border near the pixel is shared with a neighbouring quad whose decision pairs with it).
   // Tested first, from the edge alone: most candidate edges stop here. (With a z-fail volume in
   // the frame, its edges must reach centreCountShift whatever their plane: looked up first.)
-  const dvec3 ca = e.a - replay.centre, cb = e.b - replay.centre;
-  const dvec3 m = glm::cross(ca, cb);
+  const dvec3& m = e.centre_normal;
   const double mm = glm::dot(m, m);
   const double at_point = glm::dot(m, f.p - replay.centre);
   const double at_depth_point = glm::dot(m, f.start.depth_point - replay.centre);
@@ -208,8 +207,8 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
     const dvec3 x_world =
         replay.eye_position + (at_eye / (at_eye - at_point)) * (f.p - replay.eye_position);
     const dvec3 v = x_world - replay.centre;
-    const double alpha = glm::dot(glm::cross(v, cb), m) / mm;
-    const double beta = glm::dot(glm::cross(ca, v), m) / mm;
+    const double alpha = glm::dot(glm::cross(v, e.b - replay.centre), m) / mm;
+    const double beta = glm::dot(glm::cross(e.a - replay.centre, v), m) / mm;
     if (alpha >= 0.0 && beta >= 0.0 && alpha + beta >= 1.0 &&
         glm::dot(replay.forward, x_world - replay.eye_position) > replay.near_plane)
       exact = any.payload * any.facing;
@@ -277,7 +276,7 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
     return shift;
   }
   const dvec3 ca = e.a - centre, cb = e.b - centre;
-  const dvec3 m = glm::cross(ca, cb);
+  const dvec3& m = e.centre_normal;
   const double at_from = glm::dot(m, from - centre), at_to = glm::dot(m, f.p - centre);
   if ((at_from > 0.0) == (at_to > 0.0)) return 0;
   // The stencil found the depth-buffer point's side of the quad by comparing depths along the

@@ -116,8 +116,8 @@ PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
           part.triangles.resize(first);
           continue;
         }
-        part.edges.push_back(
-            PotentialEdge{a, b, uint32_t(first), uint32_t(count), first_edge + uint32_t(i)});
+        part.edges.push_back(PotentialEdge{a, b, uint32_t(first), uint32_t(count),
+                                           first_edge + uint32_t(i), glm::cross(a - c, b - c)});
       }
     });
     for (PotentialEdges& part : parts) {

@@ -51,6 +51,9 @@ struct PotentialEdge {
   uint32_t first_triangle, triangle_count;  // into PotentialEdges::triangles
   // Its number among the scene's edges (shadow_stencil.h: sceneEdgeOffsets), or none.
   uint32_t scene_edge = 0xffffffffu;
+  // (a - c) x (b - c), c the light centre: the normal of the plane of the edge's shadow quad
+  // from the centre (pixel_edges.h: quadCountShift), set once per light.
+  dvec3 centre_normal{0.0};
 };
 
 // A triangle whose plane cuts the light ball (a wall through the light, a floor the light sinks

@@ -1,10 +1,12 @@
 #pragma once
-// The triangles around every vertex of every mesh (global ids, EyeBuffers::primitive), for the
-// exact soft shadow volumes' look at the triangles next to a visible one (exact_technique.cpp).
+// The triangles sharing a vertex with a visible one (global ids, EyeBuffers::primitive), for the
+// exact soft shadow volumes' look at the triangles an origin may lie behind (pixel_edges.h:
+// capCrossings).
 #include <cstdint>
 #include <vector>
 
 #include "scene/scene.h"
+#include "scene/vertex_triangles.h"
 
 namespace penumbra {
 
@@ -16,8 +18,7 @@ class VertexRings {
 
  private:
   const Scene& scene_;
-  std::vector<std::vector<uint32_t>> first_;      // per mesh, per vertex then the end
-  std::vector<std::vector<uint32_t>> triangles_;  // per mesh, global ids grouped by vertex
+  std::vector<VertexTriangles> meshes_;  // per mesh
 };
 
 }  // namespace penumbra
