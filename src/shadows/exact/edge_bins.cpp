@@ -45,11 +45,10 @@ struct Region {
   int plane_count = 0;
   // The edge's triangles' planes, for the silhouette test (EdgeTriangle); triangle_count 0
   // when there are more than kMaxTileTriangles. The tile test uses them only when no triangle
-  // cuts the light (`tile_signs`); the pixels' quick reject always.
+  // cuts the light (EdgeScreenTest::any_cuts); the pixels' quick reject always.
   std::array<ScreenPlaneD, kMaxTileTriangles> triangles;
   std::array<const EdgeTriangle*, kMaxTileTriangles> triangle;
   int triangle_count = 0;
-  bool tile_signs = false;
   int tx0 = 0, ty0 = 0, tx1 = -1, ty1 = -1;  // tiles of the screen box, inclusive
 };
 
@@ -66,15 +65,11 @@ class RegionBuilder {
 
   Region region(const PotentialEdge& e, const EdgeTriangle* triangles) const {
     Region region;
-    // The tile's silhouette test needs every triangle's inclusion from the sides alone: not
-    // with a triangle cutting the light (its inclusion depends on distances, pixel_edges.cpp).
     if (e.triangle_count <= uint32_t(kMaxTileTriangles)) {
-      region.tile_signs = true;
       for (uint32_t k = 0; k < e.triangle_count; ++k) {
         const EdgeTriangle& t = triangles[e.first_triangle + k];
         region.triangles[k] = screenPlane(t.normal, t.offset);
         region.triangle[k] = &t;
-        region.tile_signs &= !t.cuts;
       }
       region.triangle_count = int(e.triangle_count);
     }
@@ -117,36 +112,6 @@ class RegionBuilder {
     return region;
   }
 
-  // True when no point of the tile's box (pixel centres [x0, x1] x [y0, y1], reversed-Z depth
-  // [z0, z1]), nor any point `margin` (in plane value over w) off one, can lie inside the
-  // region, or every such point sees the edge as no silhouette: each of its triangles' planes
-  // has one sign over the box and the signs cancel (exact_technique.cpp, the weight). A point
-  // on one of the triangles is on its plane, so the visible triangle, which the pixels leave
-  // out of the weight, never has a sign here.
-  static bool culled(const Region& region, double x0, double x1, double y0, double y1, double z0,
-                     double z1, double margin) {
-    for (int i = 0; i < region.plane_count; ++i) {
-      if (planeMax(region.planes[size_t(i)], x0, x1, y0, y1, z0, z1) < -margin) return true;
-    }
-    if (region.triangle_count == 0 || !region.tile_signs) return false;
-    int weight = 0;
-    for (int k = 0; k < region.triangle_count; ++k) {
-      const ScreenPlaneD& p = region.triangles[size_t(k)];
-      int sign;
-      if (-planeMax(negated(p), x0, x1, y0, y1, z0, z1) > margin) {
-        sign = 1;
-      } else if (planeMax(p, x0, x1, y0, y1, z0, z1) < -margin) {
-        sign = -1;
-      } else {
-        return false;
-      }
-      const EdgeTriangle& t = *region.triangle[size_t(k)];
-      if ((sign > 0) == t.light_above) continue;
-      weight -= t.winding * sign;
-    }
-    return weight == 0;
-  }
-
  private:
   // The region of anything inside a ball of radius rho around m (circumscribedPyramid).
   void pyramid(Region& region, const dvec3& m, double rho) const {
@@ -156,15 +121,6 @@ class RegionBuilder {
       region.planes[size_t(region.plane_count++)] = screenPlane(dvec3(planes[k]), planes[k].w);
     }
   }
-
-  // Largest value over the box, at the corner the gradient points to. (Its rounding in double
-  // is some 1e-16 of the terms, far inside the margins the callers allow.)
-  static double planeMax(const ScreenPlaneD& p, double x0, double x1, double y0, double y1,
-                         double z0, double z1) {
-    const double x = p.a >= 0 ? x1 : x0, y = p.b >= 0 ? y1 : y0, z = p.c >= 0 ? z1 : z0;
-    return p.a * x + p.b * y + p.c * z + p.d;
-  }
-  static ScreenPlaneD negated(const ScreenPlaneD& p) { return {-p.a, -p.b, -p.c, -p.d}; }
 
   ScreenPlaneD screenPlane(const dvec3& n, double offset) const {
     const dvec4 q = plane_to_clip_ * dvec4(n, offset);
@@ -380,14 +336,13 @@ class RegionBuilder {
 
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
                   const DepthBuffer& depth, int level, double margin_footprints,
-                  const Bounds3& scene_bounds) {
+                  const Bounds3& scene_bounds, bool simd) {
   EdgeBins bins;
   bins.level = level;
   const int tile = 1 << level;
   bins.columns = (view.width + tile - 1) / tile;
   bins.rows = (view.height + tile - 1) / tile;
   const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
-  const int coarse_level = std::min(level + 3, kMaxTileLevel);
   // A point d world units off its depth-buffer point changes a plane value by at most d, and
   // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
   const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
@@ -428,49 +383,38 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   };
   // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
   // item order within a tile: chunks in order, then a counting sort by tile).
-  auto binAll = [&](size_t count, const auto& regionOf, std::vector<uint32_t>& begin,
-                    std::vector<uint32_t>& items) {
+  const TileDepthRange& range = depth.tileRange(level);
+  auto binAll = [&](size_t count, const auto& regionOf, const std::vector<EdgeScreenTest>& tests,
+                    std::vector<uint32_t>& begin, std::vector<uint32_t>& items) {
     const size_t chunk_size = std::clamp(count / 64, kMinChunk, kChunk);
     const size_t chunks = (count + chunk_size - 1) / chunk_size;
     std::vector<Part> parts(chunks);
     parallelFor(chunks, [&](size_t chunk) {
       Part& part = parts[chunk];
+      std::vector<uint32_t> kept(size_t(bins.columns));
       const size_t end = std::min(count, (chunk + 1) * chunk_size);
       for (size_t i = chunk * chunk_size; i < end; ++i) {
         const Region region = regionOf(i);
-        // A quadtree over the culling tiles, from tiles 8x8 times larger down: a shadow's
-        // streak toward its vanishing point crosses a screen box that is mostly empty for it.
-        auto culledAt = [&](int k, int cx, int cy) {
-          const TileDepthRange& r = depth.tileRange(k);
-          const int size = 1 << k;
-          if (cx * size >= view.width || cy * size >= view.height) return true;
-          const float zmax = r.zmax.at(cx, cy);
-          if (!(zmax > 0.0f)) return true;  // background only
-          ++part.tested;
-          const double x0 = cx * size + 0.5, x1 = std::min(cx * size + size, view.width) - 0.5;
-          const double y0 = cy * size + 0.5, y1 = std::min(cy * size + size, view.height) - 0.5;
-          const bool culled =
-              RegionBuilder::culled(region, x0, x1, y0, y1, r.zmin.at(cx, cy), zmax, margin);
-          part.culled += culled;
-          return culled;
-        };
-        auto visit = [&](auto&& self, int k, int cx, int cy) -> void {
-          const int shift = k - level;  // culling tiles of this tile: [cx << shift, ...)
-          if ((cx + 1) << shift <= region.tx0 || cx << shift > region.tx1 ||
-              (cy + 1) << shift <= region.ty0 || cy << shift > region.ty1)
-            return;
-          if (culledAt(k, cx, cy)) return;
-          if (k == level) {
-            part.pairs.emplace_back(uint32_t(cy * bins.columns + cx), uint32_t(i));
-            return;
-          }
-          for (int child = 0; child < 4; ++child)
-            self(self, k - 1, 2 * cx + (child & 1), 2 * cy + (child >> 1));
-        };
-        const int shift = coarse_level - level;
-        for (int cy = region.ty0 >> shift; cy <= region.ty1 >> shift; ++cy)
-          for (int cx = region.tx0 >> shift; cx <= region.tx1 >> shift; ++cx)
-            visit(visit, coarse_level, cx, cy);
+        // Row by row over the region's screen box, the tile form of the pixels' quick reject
+        // (edgeTileCandidates): a flat SIMD scan of the box's tiles.
+        const EdgeScreenTest& test = tests[i];
+        for (int ty = region.ty0; ty <= region.ty1; ++ty) {
+          TileRow row;
+          row.zmin = range.zmin.row(ty);
+          row.zmax = range.zmax.row(ty);
+          row.tx0 = region.tx0;
+          row.tx1 = region.tx1;
+          row.size = tile;
+          row.width = view.width;
+          row.y0 = float(ty * tile) + 0.5f;
+          row.y1 = float(std::min(ty * tile + tile, view.height)) - 0.5f;
+          int tested = 0;
+          const int kept_count = edgeTileCandidates(test, row, kept.data(), tested, simd);
+          part.tested += uint64_t(tested);
+          part.culled += uint64_t(tested - kept_count);
+          for (int k = 0; k < kept_count; ++k)
+            part.pairs.emplace_back(uint32_t(ty * bins.columns) + kept[size_t(k)], uint32_t(i));
+        }
       }
     });
     begin.assign(tiles + 1, 0);
@@ -519,7 +463,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
         }
         return region;
       },
-      bins.begin, bins.edges);
+      bins.tests, bins.begin, bins.edges);
   binAll(
       edges.cutting.size(),
       [&](size_t i) {
@@ -530,7 +474,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
           toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
         return region;
       },
-      bins.cutting_begin, bins.cutting);
+      bins.cutting_tests, bins.cutting_begin, bins.cutting);
   return bins;
 }
 

@@ -53,6 +53,6 @@ inline EdgeBinTile edgeBinTile(const EdgeBins& bins, size_t index, int width, in
 // vanishing point from reaching across the screen.
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
                   const DepthBuffer& depth, int level, double margin_footprints,
-                  const Bounds3& scene_bounds = Bounds3());
+                  const Bounds3& scene_bounds = Bounds3(), bool simd = true);
 
 }  // namespace penumbra

@@ -46,4 +46,41 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& t, const PixelBlock& block) 
   return out;
 }
 
+int edgeTileCandidatesScalar(const EdgeScreenTest& t, const TileRow& row, uint32_t* kept,
+                             int& tested) {
+  int count = 0;
+  tested = 0;
+  const float last_centre = float(row.width) - 0.5f;
+  for (int tx = row.tx0; tx <= row.tx1; ++tx) {
+    const float zmin = row.zmin[tx], zmax = row.zmax[tx];
+    if (!(zmax > 0.0f)) continue;
+    ++tested;
+    const float x0 = float(tx * row.size) + 0.5f;
+    const float x1 = std::min(x0 + float(row.size - 1), last_centre);
+    // ((a x + b y) + c z) + d at the corner where it is largest (`high`) or smallest.
+    auto at = [&](const float* p, bool high) {
+      const float x = (p[0] >= 0.0f) == high ? x1 : x0;
+      const float y = (p[1] >= 0.0f) == high ? row.y1 : row.y0;
+      const float z = (p[2] >= 0.0f) == high ? zmax : zmin;
+      return ((p[0] * x + p[1] * y) + p[2] * z) + p[3];
+    };
+    bool keep = true;
+    for (int k = 0; k < t.region_count && keep; ++k)
+      keep = at(t.region[k], true) >= -t.region_margin[k];
+    if (keep && t.triangle_count > 0 && !t.any_cuts) {
+      bool unknown = false;
+      int32_t weight = 0;
+      for (int k = 0; k < t.triangle_count; ++k) {
+        const bool positive = at(t.triangle[k], false) > t.triangle_margin[k];
+        const bool negative = at(t.triangle[k], true) < -t.triangle_margin[k];
+        unknown |= !positive && !negative;
+        if (t.light_above[k] ? negative : positive) weight += t.weight[k];
+      }
+      keep = unknown || weight != 0;
+    }
+    if (keep) kept[count++] = uint32_t(tx);
+  }
+  return count;
+}
+
 }  // namespace penumbra

@@ -206,7 +206,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   {
     PassTimer timer(stats, "binning");
     bins = binEdges(edges, light, view, eye.depth, options_.tile_level,
-                    kMaxOriginOffsetFootprints, bounds_);
+                    kMaxOriginOffsetFootprints, bounds_, context.simd);
     stats.tiles_tested += bins.tiles_tested;
     stats.tiles_culled += bins.tiles_culled;
   }
@@ -328,7 +328,15 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             block.slack[i] = float((offset + kEps * q_length) * (1.0 + 1e-6));
           }
         }
+        // The records of the edges a few places on are fetched while this one is tested: the
+        // quick reject is bound by reading them (a tile's edges lie anywhere in the mesh).
+        constexpr ptrdiff_t kAhead = 4;
         for (const uint32_t* it = begin; it != end; ++it) {
+          if (end - it > kAhead) {
+            const char* ahead = reinterpret_cast<const char*>(&bins.tests[it[kAhead]]);
+            for (size_t line = 0; line < sizeof(EdgeScreenTest); line += 64)
+              __builtin_prefetch(ahead + line);
+          }
           work.tests += uint64_t(__builtin_popcountll(block.active));
           uint64_t candidates = edgeCandidates(bins.tests[*it], block, context.simd);
           while (candidates != 0) {

@@ -1,0 +1,164 @@
+// The exact technique bins its potential edges into screen tiles with the tile form of the
+// per-pixel quick reject (edge_screen_test.h: edgeTileCandidates): each tile's box of pixel
+// centres and depth range put into the edge's region planes and triangle planes, SIMD over the
+// tiles of a row with a scalar twin. Two things must hold. The twins agree tile for tile, or
+// `exact`'s work (and, through a wrong cull, its image) would depend on the CPU's vector width
+// or --no-simd. And a tile is kept whenever one of its pixels is kept by the pixel reject
+// (edgeCandidates): a tile culled with a candidate pixel in it would drop that pixel's edge, and
+// the pixel would be counted as lit where the oracle finds it shadowed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "shadows/exact/edge_screen_test.h"
+
+namespace penumbra {
+namespace test_exact_tile_reject {
+
+constexpr int kTile = 8;
+
+struct Random {
+  std::mt19937_64 engine{19840101};
+  float uniform(float lo, float hi) {
+    return lo + (hi - lo) * float(double(engine() >> 11) * 0x1.0p-53);
+  }
+  bool coin() { return (engine() & 1) != 0; }
+  int below(int n) { return int(engine() % uint64_t(n)); }
+};
+
+// A random edge test in screen form: planes whose zero sets cross the image (so that tiles fall
+// on both sides), margins from 0 up to a few pixels' worth, 0 to 4 triangles, some cutting the
+// light.
+EdgeScreenTest randomTest(Random& r, int width, int height) {
+  EdgeScreenTest t;
+  auto plane = [&](float out[4]) {
+    out[0] = r.uniform(-1.0f, 1.0f);
+    out[1] = r.uniform(-1.0f, 1.0f);
+    out[2] = r.uniform(-300.0f, 300.0f);
+    // Zero at a random point of the image and depth.
+    const float x = r.uniform(0.0f, float(width)), y = r.uniform(0.0f, float(height));
+    const float z = r.uniform(0.0f, 1.0f);
+    out[3] = -((out[0] * x + out[1] * y) + out[2] * z);
+    if (r.below(8) == 0) out[r.below(3)] = 0.0f;  // a plane parallel to an axis
+  };
+  t.region_count = r.below(kMaxRegionPlanes + 1);
+  for (int k = 0; k < t.region_count; ++k) {
+    plane(t.region[k]);
+    t.region_margin[k] = r.coin() ? 0.0f : r.uniform(0.0f, 3.0f);
+  }
+  t.triangle_count = r.below(5);
+  for (int k = 0; k < t.triangle_count; ++k) {
+    plane(t.triangle[k]);
+    t.triangle_margin[k] = r.coin() ? 0.0f : r.uniform(0.0f, 3.0f);
+    t.light_above[k] = r.coin();
+    t.weight[k] = r.coin() ? 1 : -1;
+    t.cuts[k] = r.below(6) == 0;
+    t.any_cuts |= t.cuts[k];
+    for (int j = 0; j < 3; ++j) t.opposite[k][j] = r.uniform(-2.0f, 2.0f);
+    t.cut_extent[k] = r.uniform(1.0f, 4.0f);
+  }
+  for (int e = 0; e < 2; ++e)
+    for (int j = 0; j < 3; ++j) t.ends[e][j] = r.uniform(-2.0f, 2.0f);
+  return t;
+}
+
+// A depth image with smooth patches, steps, background (0) and exact ties to plane values.
+std::vector<float> randomDepth(Random& r, int width, int height) {
+  std::vector<float> depth(size_t(width) * size_t(height));
+  const float base = r.uniform(0.05f, 0.9f), gx = r.uniform(-1e-3f, 1e-3f),
+              gy = r.uniform(-1e-3f, 1e-3f);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float z = base + gx * float(x) + gy * float(y);
+      if (((x / 11) + (y / 7)) % 5 == 0) z += r.uniform(-0.05f, 0.05f);  // steps
+      if ((x + 3 * y) % 23 == 0) z = 0.0f;                               // background
+      depth[size_t(y) * size_t(width) + size_t(x)] = std::clamp(z, 0.0f, 1.0f);
+    }
+  return depth;
+}
+
+TEST(ExactTileReject, SimdMatchesScalarAndKeepsEveryTileWithACandidatePixel) {
+  Random r;
+  size_t tiles_tested = 0, tiles_kept = 0, candidate_pixels = 0;
+  // Widths whose last tile is partial, and rows longer than one vector of tiles.
+  for (const int width : {37, 64, 203}) {
+    const int height = 2 * kTile + 5;
+    const int columns = (width + kTile - 1) / kTile, rows = (height + kTile - 1) / kTile;
+    for (int trial = 0; trial < 60; ++trial) {
+      const std::vector<float> depth = randomDepth(r, width, height);
+      // Per-tile depth range of the covered pixels (the background's 0 included, as
+      // DepthBuffer's pyramid has it: a tile with background reaches z = 0).
+      std::vector<float> zmin(size_t(columns) * size_t(rows), 1.0f),
+          zmax(size_t(columns) * size_t(rows), 0.0f);
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+          const size_t t = size_t(y / kTile) * size_t(columns) + size_t(x / kTile);
+          const float z = depth[size_t(y) * size_t(width) + size_t(x)];
+          zmin[t] = std::min(zmin[t], z);
+          zmax[t] = std::max(zmax[t], z);
+        }
+      for (int e = 0; e < 6; ++e) {
+        const EdgeScreenTest test = randomTest(r, width, height);
+        for (int ty = 0; ty < rows; ++ty) {
+          TileRow row;
+          row.zmin = zmin.data() + size_t(ty) * size_t(columns);
+          row.zmax = zmax.data() + size_t(ty) * size_t(columns);
+          row.tx0 = r.below(columns);
+          row.tx1 = row.tx0 + r.below(columns - row.tx0);
+          if (r.coin()) row.tx0 = 0, row.tx1 = columns - 1;
+          row.size = kTile;
+          row.width = width;
+          row.y0 = float(ty * kTile) + 0.5f;
+          row.y1 = float(std::min(ty * kTile + kTile, height)) - 0.5f;
+          std::vector<uint32_t> simd_kept(static_cast<size_t>(columns));
+          std::vector<uint32_t> scalar_kept(static_cast<size_t>(columns));
+          int simd_tested = -1, scalar_tested = -2;
+          const int simd_count =
+              edgeTileCandidates(test, row, simd_kept.data(), simd_tested, true);
+          const int scalar_count =
+              edgeTileCandidatesScalar(test, row, scalar_kept.data(), scalar_tested);
+          ASSERT_EQ(simd_count, scalar_count) << "width " << width << " row " << ty;
+          ASSERT_EQ(simd_tested, scalar_tested);
+          simd_kept.resize(size_t(simd_count));
+          scalar_kept.resize(size_t(scalar_count));
+          ASSERT_EQ(simd_kept, scalar_kept);
+          tiles_tested += size_t(scalar_tested);
+          tiles_kept += size_t(scalar_count);
+          // Every tile of the row with a candidate pixel must be among the kept ones.
+          for (int tx = row.tx0; tx <= row.tx1; ++tx) {
+            PixelBlock block;
+            block.active = 0;
+            block.has_q = false;
+            int i = 0;
+            for (int y = ty * kTile; y < std::min(ty * kTile + kTile, height); ++y)
+              for (int x = tx * kTile; x < std::min(tx * kTile + kTile, width); ++x, ++i) {
+                block.sx[i] = float(x) + 0.5f;
+                block.sy[i] = float(y) + 0.5f;
+                block.z[i] = depth[size_t(y) * size_t(width) + size_t(x)];
+                block.qx[i] = block.qy[i] = block.qz[i] = block.reach[i] = block.slack[i] = 0;
+                if (block.z[i] > 0.0f) block.active |= uint64_t(1) << i;
+              }
+            const uint64_t candidates = edgeCandidatesScalar(test, block);
+            if (candidates == 0) continue;
+            candidate_pixels += size_t(__builtin_popcountll(candidates));
+            EXPECT_TRUE(std::find(scalar_kept.begin(), scalar_kept.end(), uint32_t(tx)) !=
+                        scalar_kept.end())
+                << "tile (" << tx << ", " << ty << ") culled with "
+                << __builtin_popcountll(candidates) << " candidate pixels, width " << width;
+          }
+        }
+      }
+    }
+  }
+  std::printf("[ exact    ] tile reject: %zu tiles tested, %zu kept, %zu candidate pixels\n",
+              tiles_tested, tiles_kept, candidate_pixels);
+  // Both outcomes were exercised.
+  EXPECT_GT(tiles_kept, tiles_tested / 20);
+  EXPECT_LT(tiles_kept, tiles_tested - tiles_tested / 20);
+  EXPECT_GT(candidate_pixels, 1000u);
+}
+
+}  // namespace test_exact_tile_reject
+}  // namespace penumbra
