@@ -82,7 +82,8 @@ class ExactSoftShadows final : public PreparedTechnique {
  public:
   ExactSoftShadows(const ExactOptions& options, const Scene& scene)
       : options_(options), scene_(scene), bounds_(scene.bounds()),
-        samples_(makeSampleSet(options.samples, options.seed)), rings_(scene) {}
+        samples_(makeSampleSet(options.samples, options.seed)), rings_(scene),
+        geometry_(edgeGeometry(scene)) {}
 
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override;
@@ -97,6 +98,7 @@ class ExactSoftShadows final : public PreparedTechnique {
   Bounds3 bounds_;  // of every visible point (binEdges)
   SortedSamples samples_;
   VertexRings rings_;
+  EdgeGeometry geometry_;  // the potential edges' light-independent half
 };
 
 float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
@@ -199,7 +201,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   PotentialEdges edges;
   {
     PassTimer timer(stats, "edges");
-    edges = potentialEdges(scene_, light);
+    edges = potentialEdges(scene_, geometry_, light);
     stats.wedges += edges.edges.size();
   }
   EdgeBins bins;

@@ -86,8 +86,21 @@ struct PotentialEdges {
   size_t scene_edges = 0;  // edges of the scene's meshes, for the ratio
 };
 
+// What potentialEdges needs of the scene whatever the light, built once per scene: every
+// triangle's plane (unit normal and offset; all 0 for a triangle of zero area) and, per edge use
+// (EdgeAdjacency::uses), the triangle's winding along the edge (EdgeTriangle).
+struct EdgeGeometry {
+  std::vector<std::vector<dvec4>> planes;    // per mesh, per triangle
+  std::vector<std::vector<int8_t>> winding;  // per mesh, per edge use
+};
+EdgeGeometry edgeGeometry(const Scene& scene);
+
 // Every potential silhouette edge of the scene for `light` (radius > 0), in mesh and edge order,
 // and every triangle cutting the light. Zero-area triangles never block a ray and are left out.
-PotentialEdges potentialEdges(const Scene& scene, const Light& light);
+PotentialEdges potentialEdges(const Scene& scene, const EdgeGeometry& geometry,
+                              const Light& light);
+inline PotentialEdges potentialEdges(const Scene& scene, const Light& light) {
+  return potentialEdges(scene, edgeGeometry(scene), light);
+}
 
 }  // namespace penumbra
