@@ -1,11 +1,12 @@
 // The exact technique bins its potential edges into screen tiles with the tile form of the
 // per-pixel quick reject (edge_screen_test.h: edgeTileCandidates): each tile's box of pixel
 // centres and depth range put into the edge's region planes and triangle planes, SIMD over the
-// tiles of a row with a scalar twin. Two things must hold. The twins agree tile for tile, or
-// `exact`'s work (and, through a wrong cull, its image) would depend on the CPU's vector width
-// or --no-simd. And a tile is kept whenever one of its pixels is kept by the pixel reject
-// (edgeCandidates): a tile culled with a candidate pixel in it would drop that pixel's edge, and
-// the pixel would be counted as lit where the oracle finds it shadowed.
+// tiles of a row with a scalar twin. Two things must hold. The twins agree tile for tile (and
+// the pixel reject's twins pixel for pixel), or `exact`'s work (and, through a wrong cull, its
+// image) would depend on the CPU's vector width or --scalar. And a tile is kept whenever one of
+// its pixels is kept by the pixel reject (edgeCandidates) with an offset up to the tile's: a
+// tile culled with a candidate pixel in it would drop that pixel's edge, and the pixel would be
+// counted as lit where the oracle finds it shadowed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,8 +30,8 @@ struct Random {
 };
 
 // A random edge test in screen form: planes whose zero sets cross the image (so that tiles fall
-// on both sides), margins from 0 up to a few pixels' worth, 0 to 4 triangles, some cutting the
-// light.
+// on both sides), rounding margins from 0 up to a few pixels' worth, 0 to 4 triangles, some
+// cutting the light.
 EdgeScreenTest randomTest(Random& r, int width, int height) {
   EdgeScreenTest t;
   auto plane = [&](float out[4]) {
@@ -79,9 +80,9 @@ std::vector<float> randomDepth(Random& r, int width, int height) {
   return depth;
 }
 
-TEST(ExactTileReject, SimdMatchesScalarAndKeepsEveryTileWithACandidatePixel) {
+TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
   Random r;
-  size_t tiles_tested = 0, tiles_kept = 0, candidate_pixels = 0;
+  size_t tiles_tested = 0, tiles_kept = 0, candidate_pixels = 0, pixel_twin_blocks = 0;
   // Widths whose last tile is partial, and rows longer than one vector of tiles.
   for (const int width : {37, 64, 203}) {
     const int height = 2 * kTile + 5;
@@ -112,6 +113,8 @@ TEST(ExactTileReject, SimdMatchesScalarAndKeepsEveryTileWithACandidatePixel) {
           row.width = width;
           row.y0 = float(ty * kTile) + 0.5f;
           row.y1 = float(std::min(ty * kTile + kTile, height)) - 0.5f;
+          // The largest offset a pixel may have (0 sometimes: the rounding margins alone).
+          row.offset = r.below(4) == 0 ? 0.0f : r.uniform(0.0f, 2.0f);
           std::vector<uint32_t> simd_kept(static_cast<size_t>(columns));
           std::vector<uint32_t> scalar_kept(static_cast<size_t>(columns));
           int simd_tested = -1, scalar_tested = -2;
@@ -138,9 +141,27 @@ TEST(ExactTileReject, SimdMatchesScalarAndKeepsEveryTileWithACandidatePixel) {
                 block.sy[i] = float(y) + 0.5f;
                 block.z[i] = depth[size_t(y) * size_t(width) + size_t(x)];
                 block.qx[i] = block.qy[i] = block.qz[i] = block.reach[i] = block.slack[i] = 0;
+                // A pixel's offset is at most its tile row's: the shaded point known (smaller)
+                // or not (the row's).
+                block.offset[i] = r.coin() ? row.offset : r.uniform(0.0f, row.offset);
                 if (block.z[i] > 0.0f) block.active |= uint64_t(1) << i;
               }
             const uint64_t candidates = edgeCandidatesScalar(test, block);
+            ASSERT_EQ(edgeCandidates(test, block, true), candidates)
+                << "pixel twins differ in tile (" << tx << ", " << ty << ")";
+            // With q known, the cutting triangles' proof runs too (the twins must agree there;
+            // a q can only remove candidates, so the tile property is checked without it).
+            PixelBlock with_q = block;
+            with_q.has_q = true;
+            for (int k = 0; k < kBlockPixels; ++k) {
+              with_q.qx[k] = r.uniform(-3.0f, 3.0f);
+              with_q.qy[k] = r.uniform(-3.0f, 3.0f);
+              with_q.qz[k] = r.uniform(-3.0f, 3.0f);
+              with_q.reach[k] = r.uniform(0.0f, 1.0f);
+              with_q.slack[k] = r.uniform(0.0f, 0.1f);
+            }
+            ASSERT_EQ(edgeCandidates(test, with_q, true), edgeCandidatesScalar(test, with_q));
+            pixel_twin_blocks += 1;
             if (candidates == 0) continue;
             candidate_pixels += size_t(__builtin_popcountll(candidates));
             EXPECT_TRUE(std::find(scalar_kept.begin(), scalar_kept.end(), uint32_t(tx)) !=
@@ -152,8 +173,10 @@ TEST(ExactTileReject, SimdMatchesScalarAndKeepsEveryTileWithACandidatePixel) {
       }
     }
   }
-  std::printf("[ exact    ] tile reject: %zu tiles tested, %zu kept, %zu candidate pixels\n",
-              tiles_tested, tiles_kept, candidate_pixels);
+  std::printf(
+      "[ exact    ] tile reject: %zu tiles tested, %zu kept, %zu candidate pixels, %zu blocks "
+      "through both pixel twins\n",
+      tiles_tested, tiles_kept, candidate_pixels, pixel_twin_blocks);
   // Both outcomes were exercised.
   EXPECT_GT(tiles_kept, tiles_tested / 20);
   EXPECT_LT(tiles_kept, tiles_tested - tiles_tested / 20);

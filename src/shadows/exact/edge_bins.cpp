@@ -347,6 +347,9 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
   const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
   const double margin = margin_footprints * pixel_angle;
+  // In float for the quick reject, rounded up (the sums margin + offset it enters are rounded
+  // once more, far inside the 8 FLT_EPSILON of the planes' own margins).
+  bins.offset = float(margin * (1.0 + 1e-5));
   // Every shaded point lies within margin_footprints pixel footprints (distance to the eye
   // times the pixel angle) of a visible point of the scene; the box is widened by that at the
   // scene's farthest corner, and a little more for rounding.
@@ -365,16 +368,16 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   const dvec3 light_centre(light.center);
   bins.cutting_tests.resize(edges.cutting.size());
   // Float evaluation error of E at any pixel centre of the image with z in [0, 1]: four
-  // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp).
+  // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp). The
+  // shaded point's offset is added per pixel (PixelBlock::offset) or per tile row.
   const double x_max = view.width + 0.5, y_max = view.height + 0.5;
   auto toFloat = [&](const ScreenPlaneD& p, float out[4], float& plane_margin) {
     out[0] = float(p.a);
     out[1] = float(p.b);
     out[2] = float(p.c);
     out[3] = float(p.d);
-    plane_margin = float(margin + 8.0 * FLT_EPSILON *
-                                      (std::fabs(p.a) * x_max + std::fabs(p.b) * y_max +
-                                       std::fabs(p.c) + std::fabs(p.d)));
+    plane_margin = float(8.0 * FLT_EPSILON * (std::fabs(p.a) * x_max + std::fabs(p.b) * y_max +
+                                              std::fabs(p.c) + std::fabs(p.d)));
   };
 
   struct Part {
@@ -408,6 +411,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
           row.width = view.width;
           row.y0 = float(ty * tile) + 0.5f;
           row.y1 = float(std::min(ty * tile + tile, view.height)) - 0.5f;
+          row.offset = bins.offset;
           int tested = 0;
           const int kept_count = edgeTileCandidates(test, row, kept.data(), tested, simd);
           part.tested += uint64_t(tested);

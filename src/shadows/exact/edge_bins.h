@@ -27,6 +27,9 @@ struct EdgeBins {
   std::vector<uint32_t> edges;  // edge indices, ascending within a tile
   // Per potential edge, its planes for the per-pixel quick reject (edge_screen_test.h).
   std::vector<EdgeScreenTest> tests;
+  // margin_footprints pixel footprints over w, the quick reject's offset for a pixel whose
+  // shaded point is not known yet, and the tiles' (PixelBlock::offset).
+  float offset = 0.0f;
   // The same for the triangles cutting the light (PotentialEdges::cutting): per tile, indices,
   // and per triangle its region's planes for the quick reject (no silhouette test).
   std::vector<uint32_t> cutting_begin, cutting;

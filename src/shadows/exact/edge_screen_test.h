@@ -4,8 +4,9 @@
 // depth-buffer point is put in float into the edge's region planes and its triangles' planes
 // (potential_edges.h, binEdges), screen-space forms set up once per edge (wedge_screen.h: the
 // world plane value over w). A pixel is kept when it may lie in the region and may see the edge
-// as a silhouette: every plane within its margin of the point, which covers the float rounding
-// and the distance from the depth-buffer point to the shaded point.
+// as a silhouette: every plane within its margin of the point. The margin is the plane's own
+// float rounding (EdgeScreenTest) plus the pixel's `offset` (PixelBlock): how far the shaded
+// point can lie from the depth-buffer point, in the same units (world distance over w).
 #include <cstdint>
 
 namespace penumbra {
@@ -14,12 +15,14 @@ inline constexpr int kBlockPixels = 64;
 // Tangent planes, end planes and a circumscribed pyramid (potential_edges.cpp).
 inline constexpr int kMaxRegionPlanes = 8;
 
-// E(sx, sy, z) = ((a sx + b sy) + c z) + d, in float, in this order.
+// E(sx, sy, z) = ((a sx + b sy) + c z) + d, in float, in this order. The margins bound its float
+// rounding at any pixel centre of the image with z in [0, 1]; a point is within a plane's
+// margin where E >= -(margin + offset), offset the pixel's (or the tile row's).
 struct EdgeScreenTest {
   float region[kMaxRegionPlanes][4];
   float region_margin[kMaxRegionPlanes];
   int region_count = 0;
-  // Triangles: a sign is known where |E| > margin; included (crossed between point and light)
+  // Triangles: a sign is known where |E| > margin + offset; included (crossed between point and light)
   // where that sign is not the light centre's; an included triangle adds `weight` (+-1).
   float triangle[4][4];
   float triangle_margin[4];
@@ -46,8 +49,12 @@ struct EdgeScreenTest {
 // the shaded point lies from p0 (a move of p by d changes v'.q + r |q| by at most
 // d (|v'| + r)) and eps far above the float rounding of these values (exact_technique.cpp): a
 // corner is certainly in front where v'.q + reach + slack * (|v'| + r) < 0.
+// `offset` is the farthest the pixel's shaded point lies from its depth-buffer point, over the
+// point's w: the largest possible before the shaded point is known (EdgeBins::offset), the
+// distance itself, rounded up, once it is.
 struct alignas(64) PixelBlock {
   float sx[kBlockPixels], sy[kBlockPixels], z[kBlockPixels];
+  float offset[kBlockPixels];
   float qx[kBlockPixels], qy[kBlockPixels], qz[kBlockPixels];
   float reach[kBlockPixels], slack[kBlockPixels];
   bool has_q = false;  // false: q, reach and slack unset, every cutting triangle keeps the pixel
@@ -75,6 +82,7 @@ struct TileRow {
   int tx0, tx1;
   int size, width;
   float y0, y1;
+  float offset;  // the largest PixelBlock::offset of any pixel (EdgeBins::offset)
 };
 // Writes the kept tiles' tx to `kept` (room for tx1 - tx0 + 1) in ascending order and returns
 // their number; `tested` gets the number of tiles that hold a covered pixel.

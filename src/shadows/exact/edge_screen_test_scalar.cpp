@@ -8,11 +8,11 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& t, const PixelBlock& block) 
   uint64_t out = 0;
   for (int i = 0; i < kBlockPixels; ++i) {
     if (!((block.active >> i) & 1u)) continue;
-    const float sx = block.sx[i], sy = block.sy[i], z = block.z[i];
+    const float sx = block.sx[i], sy = block.sy[i], z = block.z[i], offset = block.offset[i];
     bool keep = true;
     for (int k = 0; k < t.region_count && keep; ++k) {
       const float* p = t.region[k];
-      keep = ((p[0] * sx + p[1] * sy) + p[2] * z) + p[3] >= -t.region_margin[k];
+      keep = ((p[0] * sx + p[1] * sy) + p[2] * z) + p[3] >= -(t.region_margin[k] + offset);
     }
     if (!keep) continue;
     if (t.triangle_count > 0) {
@@ -23,8 +23,9 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& t, const PixelBlock& block) 
       for (int k = 0; k < t.triangle_count; ++k) {
         const float* p = t.triangle[k];
         const float e = ((p[0] * sx + p[1] * sy) + p[2] * z) + p[3];
-        const bool positive = e > t.triangle_margin[k];
-        const bool negative = e < -t.triangle_margin[k];
+        const float margin = t.triangle_margin[k] + offset;
+        const bool positive = e > margin;
+        const bool negative = e < -margin;
         unknown |= !positive && !negative;
         if (t.cuts[k]) {
           // No proof without q: the pixel is kept.
@@ -66,13 +67,14 @@ int edgeTileCandidatesScalar(const EdgeScreenTest& t, const TileRow& row, uint32
     };
     bool keep = true;
     for (int k = 0; k < t.region_count && keep; ++k)
-      keep = at(t.region[k], true) >= -t.region_margin[k];
+      keep = at(t.region[k], true) >= -(t.region_margin[k] + row.offset);
     if (keep && t.triangle_count > 0 && !t.any_cuts) {
       bool unknown = false;
       int32_t weight = 0;
       for (int k = 0; k < t.triangle_count; ++k) {
-        const bool positive = at(t.triangle[k], false) > t.triangle_margin[k];
-        const bool negative = at(t.triangle[k], true) < -t.triangle_margin[k];
+        const float margin = t.triangle_margin[k] + row.offset;
+        const bool positive = at(t.triangle[k], false) > margin;
+        const bool negative = at(t.triangle[k], true) < -margin;
         unknown |= !positive && !negative;
         if (t.light_above[k] ? negative : positive) weight += t.weight[k];
       }

@@ -30,6 +30,7 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
     const auto sx = hn::Load(df, block.sx + i);
     const auto sy = hn::Load(df, block.sy + i);
     const auto z = hn::Load(df, block.z + i);
+    const auto offset = hn::Load(df, block.offset + i);
     // ((a sx + b sy) + c z) + d, as the scalar twin.
     auto planeAt = [&](const float* p) {
       return hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), sx),
@@ -41,7 +42,8 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
     // the remaining planes cannot bring one back (the scalar twin stops per pixel the same way).
     auto keep = hn::FirstN(df, lanes);  // all true
     for (int k = 0; k < t.region_count; ++k) {
-      keep = hn::And(keep, hn::Ge(planeAt(t.region[k]), hn::Set(df, -t.region_margin[k])));
+      keep = hn::And(keep, hn::Ge(planeAt(t.region[k]),
+                                  hn::Neg(hn::Add(hn::Set(df, t.region_margin[k]), offset))));
       if (hn::AllFalse(df, keep)) break;
     }
     if (hn::AllFalse(df, keep)) continue;
@@ -56,8 +58,9 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
       };
       for (int k = 0; k < t.triangle_count; ++k) {
         const auto e = planeAt(t.triangle[k]);
-        const auto positive = hn::Gt(e, hn::Set(df, t.triangle_margin[k]));
-        const auto negative = hn::Lt(e, hn::Set(df, -t.triangle_margin[k]));
+        const auto margin = hn::Add(hn::Set(df, t.triangle_margin[k]), offset);
+        const auto positive = hn::Gt(e, margin);
+        const auto negative = hn::Lt(e, hn::Neg(margin));
         unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
         if (t.cuts[k] && !block.has_q) {
           unknown = hn::FirstN(df, lanes);  // all true: no proof without q
@@ -134,13 +137,14 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const TileRow& row, uint32_t
     };
     auto keep = covered;
     for (int k = 0; k < t.region_count && !hn::AllFalse(df, keep); ++k)
-      keep = hn::And(keep, hn::Ge(at(t.region[k], true), hn::Set(df, -t.region_margin[k])));
+      keep = hn::And(keep, hn::Ge(at(t.region[k], true), hn::Set(df, -(t.region_margin[k] + row.offset))));
     if (signs && !hn::AllFalse(df, keep)) {
       auto unknown = hn::FirstN(df, 0);
       auto weight = hn::Zero(di);
       for (int k = 0; k < t.triangle_count; ++k) {
-        const auto positive = hn::Gt(at(t.triangle[k], false), hn::Set(df, t.triangle_margin[k]));
-        const auto negative = hn::Lt(at(t.triangle[k], true), hn::Set(df, -t.triangle_margin[k]));
+        const float margin = t.triangle_margin[k] + row.offset;
+        const auto positive = hn::Gt(at(t.triangle[k], false), hn::Set(df, margin));
+        const auto negative = hn::Lt(at(t.triangle[k], true), hn::Set(df, -margin));
         unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
         const auto included = t.light_above[k] ? negative : positive;
         weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),

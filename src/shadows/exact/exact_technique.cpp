@@ -220,6 +220,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     const FacingAway away(scene_, light, view);
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
     const dvec3 light_centre(light.center), eye_position(view.eye);
+    const dmat4 view_projection(view.view_projection);
     const QuadReplay replay{
         quads, eye, light_centre, eye_position,
         -glm::normalize(dvec3(view.view[0][2], view.view[1][2], view.view[2][2])),
@@ -275,11 +276,23 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         }
         return true;
       };
+      // How far the pixel's shaded point lies from its depth-buffer point, over the point's w
+      // (PixelBlock::offset), rounded up; most points lie on the pixel's own ray, and the quick
+      // reject then keeps only the edges that can reach the point itself. Never above the
+      // offset the tiles were binned with.
+      const auto shadedOffset = [&](const PixelFrame& f) {
+        const double w = (view_projection * dvec4(f.start.depth_point, 1.0)).w;
+        const double apart = glm::length(f.p - f.start.depth_point);
+        const double offset = apart / w * (1.0 + 1e-5);
+        return offset < double(bins.offset) ? float(offset) * (1.0f + 1e-6f) + 1e-30f
+                                            : bins.offset;
+      };
       // Blocks of up to 64 pixels, row after row of the tile.
       int x = x0, y = y0;
       while (y < y1) {
         PixelBlock& block = scratch.block;
         block.active = 0;
+        std::fill(std::begin(block.offset), std::end(block.offset), bins.offset);
         int used = 0;
         for (; y < y1 && used < kBlockPixels; x = (x + 1 < x1) ? x + 1 : x0, y += (x == x0)) {
           const int i = used++;
@@ -302,6 +315,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
               soft.at(x, y) = known;
               continue;
             }
+            block.offset[i] = shadedOffset(f);
           }
           block.active |= uint64_t(1) << i;
           scratch.edges[i].clear();
@@ -351,6 +365,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             if (!f.ready) {
               float known = 0.0f;  // never set: a clear pixel is outside the light
               setUp(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f, known);
+              block.offset[i] = shadedOffset(f);
             }
             bool zfail = false;
             f.centre_count +=
@@ -384,6 +399,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             if (!f.ready) {
               float known = 0.0f;  // never set: a clear pixel is outside the light
               setUp(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f, known);
+              block.offset[i] = shadedOffset(f);
             }
             // Outside the cone, or in front of the light, where the edge sums count it.
             if (classifyCutting(t.v[0], t.v[1], t.v[2], f) != CuttingPlace::Across) continue;
