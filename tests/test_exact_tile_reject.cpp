@@ -1,12 +1,12 @@
 // The exact technique bins its potential edges into screen tiles with the tile form of the
 // per-pixel quick reject (edge_screen_test.h: edgeTileCandidates): each tile's box of pixel
 // centres and depth range put into the edge's region planes and triangle planes, SIMD over the
-// tiles of a row with a scalar twin. Two things must hold. The twins agree tile for tile (and
-// the pixel reject's twins pixel for pixel), or `exact`'s work (and, through a wrong cull, its
-// image) would depend on the CPU's vector width or --scalar. And a tile is kept whenever one of
-// its pixels is kept by the pixel reject (edgeCandidates) with an offset up to the tile's: a
-// tile culled with a candidate pixel in it would drop that pixel's edge, and the pixel would be
-// counted as lit where the oracle finds it shadowed.
+// tiles of a box's rows with a scalar twin. Two things must hold. The twins agree tile for tile
+// (and the pixel reject's twins pixel for pixel), or `exact`'s work (and, through a wrong cull,
+// its image) would depend on the CPU's vector width or --scalar. And a tile is kept whenever
+// one of its pixels is kept by the pixel reject (edgeCandidates) with an offset up to the
+// tiles': a tile culled with a candidate pixel in it would drop that pixel's edge, and the
+// pixel would be counted as lit where the oracle finds it shadowed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -102,72 +102,78 @@ TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
         }
       for (int e = 0; e < 6; ++e) {
         const EdgeScreenTest test = randomTest(r, width, height);
-        for (int ty = 0; ty < rows; ++ty) {
-          TileRow row;
-          row.zmin = zmin.data() + size_t(ty) * size_t(columns);
-          row.zmax = zmax.data() + size_t(ty) * size_t(columns);
-          row.tx0 = r.below(columns);
-          row.tx1 = row.tx0 + r.below(columns - row.tx0);
-          if (r.coin()) row.tx0 = 0, row.tx1 = columns - 1;
-          row.size = kTile;
-          row.width = width;
-          row.y0 = float(ty * kTile) + 0.5f;
-          row.y1 = float(std::min(ty * kTile + kTile, height)) - 0.5f;
+        for (int box_index = 0; box_index < 4; ++box_index) {
+          // A random box of tiles, or the whole grid.
+          TileBox box;
+          box.zmin = zmin.data();
+          box.zmax = zmax.data();
+          box.columns = columns;
+          box.tx0 = r.below(columns);
+          box.tx1 = box.tx0 + r.below(columns - box.tx0);
+          box.ty0 = r.below(rows);
+          box.ty1 = box.ty0 + r.below(rows - box.ty0);
+          if (r.coin()) box.tx0 = 0, box.tx1 = columns - 1, box.ty0 = 0, box.ty1 = rows - 1;
+          box.size = kTile;
+          box.width = width;
+          box.height = height;
           // The largest offset a pixel may have (0 sometimes: the rounding margins alone).
-          row.offset = r.below(4) == 0 ? 0.0f : r.uniform(0.0f, 2.0f);
-          std::vector<uint32_t> simd_kept(static_cast<size_t>(columns));
-          std::vector<uint32_t> scalar_kept(static_cast<size_t>(columns));
+          box.offset = r.below(4) == 0 ? 0.0f : r.uniform(0.0f, 2.0f);
+          const size_t room = size_t(columns) * size_t(rows);
+          std::vector<uint32_t> simd_kept(room), scalar_kept(room);
           int simd_tested = -1, scalar_tested = -2;
           const int simd_count =
-              edgeTileCandidates(test, row, simd_kept.data(), simd_tested, true);
+              edgeTileCandidates(test, box, simd_kept.data(), simd_tested, true);
           const int scalar_count =
-              edgeTileCandidatesScalar(test, row, scalar_kept.data(), scalar_tested);
-          ASSERT_EQ(simd_count, scalar_count) << "width " << width << " row " << ty;
+              edgeTileCandidatesScalar(test, box, scalar_kept.data(), scalar_tested);
+          ASSERT_EQ(simd_count, scalar_count) << "width " << width << " box " << box_index;
           ASSERT_EQ(simd_tested, scalar_tested);
           simd_kept.resize(size_t(simd_count));
           scalar_kept.resize(size_t(scalar_count));
           ASSERT_EQ(simd_kept, scalar_kept);
           tiles_tested += size_t(scalar_tested);
           tiles_kept += size_t(scalar_count);
-          // Every tile of the row with a candidate pixel must be among the kept ones.
-          for (int tx = row.tx0; tx <= row.tx1; ++tx) {
-            PixelBlock block;
-            block.active = 0;
-            block.has_q = false;
-            int i = 0;
-            for (int y = ty * kTile; y < std::min(ty * kTile + kTile, height); ++y)
-              for (int x = tx * kTile; x < std::min(tx * kTile + kTile, width); ++x, ++i) {
-                block.sx[i] = float(x) + 0.5f;
-                block.sy[i] = float(y) + 0.5f;
-                block.z[i] = depth[size_t(y) * size_t(width) + size_t(x)];
-                block.qx[i] = block.qy[i] = block.qz[i] = block.reach[i] = block.slack[i] = 0;
-                // A pixel's offset is at most its tile row's: the shaded point known (smaller)
-                // or not (the row's).
-                block.offset[i] = r.coin() ? row.offset : r.uniform(0.0f, row.offset);
-                if (block.z[i] > 0.0f) block.active |= uint64_t(1) << i;
+          // Every tile of the box with a candidate pixel must be among the kept ones.
+          for (int ty = box.ty0; ty <= box.ty1; ++ty) {
+            for (int tx = box.tx0; tx <= box.tx1; ++tx) {
+              PixelBlock block;
+              block.active = 0;
+              block.has_q = false;
+              int i = 0;
+              for (int y = ty * kTile; y < std::min(ty * kTile + kTile, height); ++y)
+                for (int x = tx * kTile; x < std::min(tx * kTile + kTile, width); ++x, ++i) {
+                  block.sx[i] = float(x) + 0.5f;
+                  block.sy[i] = float(y) + 0.5f;
+                  block.z[i] = depth[size_t(y) * size_t(width) + size_t(x)];
+                  block.qx[i] = block.qy[i] = block.qz[i] = block.reach[i] = block.slack[i] = 0;
+                  // A pixel's offset is at most the tiles': the shaded point known (smaller) or
+                  // not (the tiles').
+                  block.offset[i] = r.coin() ? box.offset : r.uniform(0.0f, box.offset);
+                  if (block.z[i] > 0.0f) block.active |= uint64_t(1) << i;
+                }
+              const uint64_t candidates = edgeCandidatesScalar(test, block);
+              ASSERT_EQ(edgeCandidates(test, block, true), candidates)
+                  << "pixel twins differ in tile (" << tx << ", " << ty << ")";
+              // With q known, the cutting triangles' proof runs too (the twins must agree there;
+              // a q can only remove candidates, so the tile property is checked without it).
+              PixelBlock with_q = block;
+              with_q.has_q = true;
+              for (int k = 0; k < kBlockPixels; ++k) {
+                with_q.qx[k] = r.uniform(-3.0f, 3.0f);
+                with_q.qy[k] = r.uniform(-3.0f, 3.0f);
+                with_q.qz[k] = r.uniform(-3.0f, 3.0f);
+                with_q.reach[k] = r.uniform(0.0f, 1.0f);
+                with_q.slack[k] = r.uniform(0.0f, 0.1f);
               }
-            const uint64_t candidates = edgeCandidatesScalar(test, block);
-            ASSERT_EQ(edgeCandidates(test, block, true), candidates)
-                << "pixel twins differ in tile (" << tx << ", " << ty << ")";
-            // With q known, the cutting triangles' proof runs too (the twins must agree there;
-            // a q can only remove candidates, so the tile property is checked without it).
-            PixelBlock with_q = block;
-            with_q.has_q = true;
-            for (int k = 0; k < kBlockPixels; ++k) {
-              with_q.qx[k] = r.uniform(-3.0f, 3.0f);
-              with_q.qy[k] = r.uniform(-3.0f, 3.0f);
-              with_q.qz[k] = r.uniform(-3.0f, 3.0f);
-              with_q.reach[k] = r.uniform(0.0f, 1.0f);
-              with_q.slack[k] = r.uniform(0.0f, 0.1f);
+              ASSERT_EQ(edgeCandidates(test, with_q, true), edgeCandidatesScalar(test, with_q));
+              pixel_twin_blocks += 1;
+              if (candidates == 0) continue;
+              candidate_pixels += size_t(__builtin_popcountll(candidates));
+              const uint32_t index = uint32_t(ty * columns + tx);
+              EXPECT_TRUE(std::find(scalar_kept.begin(), scalar_kept.end(), index) !=
+                          scalar_kept.end())
+                  << "tile (" << tx << ", " << ty << ") culled with "
+                  << __builtin_popcountll(candidates) << " candidate pixels, width " << width;
             }
-            ASSERT_EQ(edgeCandidates(test, with_q, true), edgeCandidatesScalar(test, with_q));
-            pixel_twin_blocks += 1;
-            if (candidates == 0) continue;
-            candidate_pixels += size_t(__builtin_popcountll(candidates));
-            EXPECT_TRUE(std::find(scalar_kept.begin(), scalar_kept.end(), uint32_t(tx)) !=
-                        scalar_kept.end())
-                << "tile (" << tx << ", " << ty << ") culled with "
-                << __builtin_popcountll(candidates) << " candidate pixels, width " << width;
           }
         }
       }

@@ -394,31 +394,30 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
     std::vector<Part> parts(chunks);
     parallelFor(chunks, [&](size_t chunk) {
       Part& part = parts[chunk];
-      std::vector<uint32_t> kept(size_t(bins.columns));
+      std::vector<uint32_t> kept(tiles);
       const size_t end = std::min(count, (chunk + 1) * chunk_size);
       for (size_t i = chunk * chunk_size; i < end; ++i) {
         const Region region = regionOf(i);
-        // Row by row over the region's screen box, the tile form of the pixels' quick reject
-        // (edgeTileCandidates): a flat SIMD scan of the box's tiles.
-        const EdgeScreenTest& test = tests[i];
-        for (int ty = region.ty0; ty <= region.ty1; ++ty) {
-          TileRow row;
-          row.zmin = range.zmin.row(ty);
-          row.zmax = range.zmax.row(ty);
-          row.tx0 = region.tx0;
-          row.tx1 = region.tx1;
-          row.size = tile;
-          row.width = view.width;
-          row.y0 = float(ty * tile) + 0.5f;
-          row.y1 = float(std::min(ty * tile + tile, view.height)) - 0.5f;
-          row.offset = bins.offset;
-          int tested = 0;
-          const int kept_count = edgeTileCandidates(test, row, kept.data(), tested, simd);
-          part.tested += uint64_t(tested);
-          part.culled += uint64_t(tested - kept_count);
-          for (int k = 0; k < kept_count; ++k)
-            part.pairs.emplace_back(uint32_t(ty * bins.columns) + kept[size_t(k)], uint32_t(i));
-        }
+        // The region's screen box through the tile form of the pixels' quick reject
+        // (edgeTileCandidates): a flat SIMD scan of the box's tiles, row by row.
+        if (region.tx0 > region.tx1 || region.ty0 > region.ty1) continue;
+        TileBox box;
+        box.zmin = range.zmin.data();
+        box.zmax = range.zmax.data();
+        box.columns = bins.columns;
+        box.tx0 = region.tx0;
+        box.tx1 = region.tx1;
+        box.ty0 = region.ty0;
+        box.ty1 = region.ty1;
+        box.size = tile;
+        box.width = view.width;
+        box.height = view.height;
+        box.offset = bins.offset;
+        int tested = 0;
+        const int kept_count = edgeTileCandidates(tests[i], box, kept.data(), tested, simd);
+        part.tested += uint64_t(tested);
+        part.culled += uint64_t(tested - kept_count);
+        for (int k = 0; k < kept_count; ++k) part.pairs.emplace_back(kept[size_t(k)], uint32_t(i));
       }
     });
     begin.assign(tiles + 1, 0);

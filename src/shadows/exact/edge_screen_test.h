@@ -22,8 +22,9 @@ struct EdgeScreenTest {
   float region[kMaxRegionPlanes][4];
   float region_margin[kMaxRegionPlanes];
   int region_count = 0;
-  // Triangles: a sign is known where |E| > margin + offset; included (crossed between point and light)
-  // where that sign is not the light centre's; an included triangle adds `weight` (+-1).
+  // Triangles: a sign is known where |E| > margin + offset; included (crossed between point
+  // and light) where that sign is not the light centre's; an included triangle adds `weight`
+  // (+-1).
   float triangle[4][4];
   float triangle_margin[4];
   bool light_above[4];
@@ -65,30 +66,31 @@ struct alignas(64) PixelBlock {
 uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, bool simd);
 uint64_t edgeCandidatesScalar(const EdgeScreenTest& test, const PixelBlock& block);
 
-// The same reject for whole tiles (edge_bins.cpp): one row of square tiles of `size` pixels,
-// tiles [tx0, tx1], their pixel centres [tx size + 0.5, min(tx size + size, width) - 0.5] x
-// [y0, y1] and their depth-buffer points' reversed-Z range [zmin[tx], zmax[tx]] (zmax 0: only
-// background, nothing to shade). A tile is kept unless the box of those ranges lies outside a
-// region plane by more than its margin, or the edge's triangles' planes each have one sign
-// over the box (no triangle cutting the light) and their weights cancel: the pixel test's
-// float operations at the box corner that decides each bound, so a kept pixel's tile is kept.
-// (A point on one of the edge's triangles is on its plane, so the visible triangle, which the
-// pixels leave out of the weight, never has a sign over a box holding the point.) The margins
-// hold the shaded points' distance from the depth-buffer points, so the test binds the
-// shaded points too. SIMD over 4 to 16 tiles of the row with a scalar twin (same results).
-struct TileRow {
+// The same reject for whole tiles (edge_bins.cpp): square tiles of `size` pixels, tiles
+// [tx0, tx1] x [ty0, ty1] of a grid of `columns`, tile (tx, ty) holding the pixel centres
+// [tx size + 0.5, min(tx size + size, width) - 0.5] x [ty size + 0.5, min(ty size + size,
+// height) - 0.5] and its depth-buffer points' reversed-Z range [zmin, zmax] (entry ty columns +
+// tx; zmax 0: only background, nothing to shade). A tile is kept unless the box of those ranges
+// lies outside a region plane by more than its margin, or the edge's triangles' planes each
+// have one sign over the box (no triangle cutting the light) and their weights cancel: the
+// pixel test's float operations at the box corner that decides each bound, so a kept pixel's
+// tile is kept. (A point on one of the edge's triangles is on its plane, so the visible
+// triangle, which the pixels leave out of the weight, never has a sign over a box holding the
+// point.) SIMD over 4 to 16 tiles of a row with a scalar twin (same results).
+struct TileBox {
   const float* zmin;
   const float* zmax;
-  int tx0, tx1;
-  int size, width;
-  float y0, y1;
+  int columns;
+  int tx0, tx1, ty0, ty1;
+  int size, width, height;
   float offset;  // the largest PixelBlock::offset of any pixel (EdgeBins::offset)
 };
-// Writes the kept tiles' tx to `kept` (room for tx1 - tx0 + 1) in ascending order and returns
-// their number; `tested` gets the number of tiles that hold a covered pixel.
-int edgeTileCandidates(const EdgeScreenTest& test, const TileRow& row, uint32_t* kept,
+// Writes the kept tiles' indices (ty columns + tx) to `kept` (room for the box's tiles) in
+// ascending order and returns their number; `tested` gets the number of tiles that hold a
+// covered pixel.
+int edgeTileCandidates(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
                        int& tested, bool simd);
-int edgeTileCandidatesScalar(const EdgeScreenTest& test, const TileRow& row, uint32_t* kept,
+int edgeTileCandidatesScalar(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
                              int& tested);
 
 }  // namespace penumbra

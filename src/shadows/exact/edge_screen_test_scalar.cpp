@@ -47,40 +47,45 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& t, const PixelBlock& block) 
   return out;
 }
 
-int edgeTileCandidatesScalar(const EdgeScreenTest& t, const TileRow& row, uint32_t* kept,
+int edgeTileCandidatesScalar(const EdgeScreenTest& t, const TileBox& box, uint32_t* kept,
                              int& tested) {
   int count = 0;
   tested = 0;
-  const float last_centre = float(row.width) - 0.5f;
-  for (int tx = row.tx0; tx <= row.tx1; ++tx) {
-    const float zmin = row.zmin[tx], zmax = row.zmax[tx];
-    if (!(zmax > 0.0f)) continue;
-    ++tested;
-    const float x0 = float(tx * row.size) + 0.5f;
-    const float x1 = std::min(x0 + float(row.size - 1), last_centre);
-    // ((a x + b y) + c z) + d at the corner where it is largest (`high`) or smallest.
-    auto at = [&](const float* p, bool high) {
-      const float x = (p[0] >= 0.0f) == high ? x1 : x0;
-      const float y = (p[1] >= 0.0f) == high ? row.y1 : row.y0;
-      const float z = (p[2] >= 0.0f) == high ? zmax : zmin;
-      return ((p[0] * x + p[1] * y) + p[2] * z) + p[3];
-    };
-    bool keep = true;
-    for (int k = 0; k < t.region_count && keep; ++k)
-      keep = at(t.region[k], true) >= -(t.region_margin[k] + row.offset);
-    if (keep && t.triangle_count > 0 && !t.any_cuts) {
-      bool unknown = false;
-      int32_t weight = 0;
-      for (int k = 0; k < t.triangle_count; ++k) {
-        const float margin = t.triangle_margin[k] + row.offset;
-        const bool positive = at(t.triangle[k], false) > margin;
-        const bool negative = at(t.triangle[k], true) < -margin;
-        unknown |= !positive && !negative;
-        if (t.light_above[k] ? negative : positive) weight += t.weight[k];
+  const float last_centre = float(box.width) - 0.5f;
+  for (int ty = box.ty0; ty <= box.ty1; ++ty) {
+    const float y0 = float(ty * box.size) + 0.5f;
+    const float y1 = float(std::min(ty * box.size + box.size, box.height)) - 0.5f;
+    const size_t row = size_t(ty) * size_t(box.columns);
+    for (int tx = box.tx0; tx <= box.tx1; ++tx) {
+      const float zmin = box.zmin[row + size_t(tx)], zmax = box.zmax[row + size_t(tx)];
+      if (!(zmax > 0.0f)) continue;
+      ++tested;
+      const float x0 = float(tx * box.size) + 0.5f;
+      const float x1 = std::min(x0 + float(box.size - 1), last_centre);
+      // ((a x + b y) + c z) + d at the corner where it is largest (`high`) or smallest.
+      auto at = [&](const float* p, bool high) {
+        const float x = (p[0] >= 0.0f) == high ? x1 : x0;
+        const float y = (p[1] >= 0.0f) == high ? y1 : y0;
+        const float z = (p[2] >= 0.0f) == high ? zmax : zmin;
+        return ((p[0] * x + p[1] * y) + p[2] * z) + p[3];
+      };
+      bool keep = true;
+      for (int k = 0; k < t.region_count && keep; ++k)
+        keep = at(t.region[k], true) >= -(t.region_margin[k] + box.offset);
+      if (keep && t.triangle_count > 0 && !t.any_cuts) {
+        bool unknown = false;
+        int32_t weight = 0;
+        for (int k = 0; k < t.triangle_count; ++k) {
+          const float margin = t.triangle_margin[k] + box.offset;
+          const bool positive = at(t.triangle[k], false) > margin;
+          const bool negative = at(t.triangle[k], true) < -margin;
+          unknown |= !positive && !negative;
+          if (t.light_above[k] ? negative : positive) weight += t.weight[k];
+        }
+        keep = unknown || weight != 0;
       }
-      keep = unknown || weight != 0;
+      if (keep) kept[count++] = uint32_t(row) + uint32_t(tx);
     }
-    if (keep) kept[count++] = uint32_t(tx);
   }
   return count;
 }

@@ -92,7 +92,7 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
   return out;
 }
 
-int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const TileRow& row, uint32_t* kept,
+int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const TileBox& box, uint32_t* kept,
                            int& tested) {
   const hn::CappedTag<float, 16> df;
   const hn::RebindToSigned<decltype(df)> di;
@@ -101,61 +101,73 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const TileRow& row, uint32_t
   int count = 0;
   tested = 0;
   const auto zero = hn::Zero(df);
-  const auto last_centre = hn::Set(df, float(row.width) - 0.5f);
-  const auto size = hn::Set(df, float(row.size)), half = hn::Set(df, 0.5f);
-  const auto span = hn::Set(df, float(row.size - 1));
-  const auto y0 = hn::Set(df, row.y0), y1 = hn::Set(df, row.y1);
+  const auto last_centre = hn::Set(df, float(box.width) - 0.5f);
+  const auto size = hn::Set(df, float(box.size)), half = hn::Set(df, 0.5f);
+  const auto span = hn::Set(df, float(box.size - 1));
   const auto lane_index = hn::Iota(df, 0.0f);
   const bool signs = t.triangle_count > 0 && !t.any_cuts;
-  for (int tx = row.tx0; tx <= row.tx1; tx += int(lanes)) {
-    const size_t n = std::min(lanes, size_t(row.tx1 - tx + 1));
-    const auto in_row = hn::FirstN(df, n);
-    // The row's last tiles from a padded copy: no read past the row's end.
-    HWY_ALIGN float tail_min[16] = {}, tail_max[16] = {};
-    const float* zmin_at = row.zmin + tx;
-    const float* zmax_at = row.zmax + tx;
-    if (n < lanes) {
-      std::copy(zmin_at, zmin_at + n, tail_min);
-      std::copy(zmax_at, zmax_at + n, tail_max);
-      zmin_at = tail_min;
-      zmax_at = tail_max;
-    }
-    const auto zmin = hn::LoadU(df, zmin_at);
-    const auto zmax = hn::LoadU(df, zmax_at);
-    // float(tx * size) + 0.5 lane by lane, as the scalar twin (exact: small integers).
-    const auto x0 = hn::Add(hn::Mul(hn::Add(lane_index, hn::Set(df, float(tx))), size), half);
-    const auto x1 = hn::Min(hn::Add(x0, span), last_centre);
-    const auto covered = hn::And(in_row, hn::Gt(zmax, zero));
-    tested += int(hn::CountTrue(df, covered));
-    auto at = [&](const float* p, bool high) {
-      const auto x = (p[0] >= 0.0f) == high ? x1 : x0;
-      const auto y = (p[1] >= 0.0f) == high ? y1 : y0;
-      const auto z = (p[2] >= 0.0f) == high ? zmax : zmin;
-      return hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), x), hn::Mul(hn::Set(df, p[1]), y)),
-                             hn::Mul(hn::Set(df, p[2]), z)),
-                     hn::Set(df, p[3]));
-    };
-    auto keep = covered;
-    for (int k = 0; k < t.region_count && !hn::AllFalse(df, keep); ++k)
-      keep = hn::And(keep, hn::Ge(at(t.region[k], true), hn::Set(df, -(t.region_margin[k] + row.offset))));
-    if (signs && !hn::AllFalse(df, keep)) {
-      auto unknown = hn::FirstN(df, 0);
-      auto weight = hn::Zero(di);
-      for (int k = 0; k < t.triangle_count; ++k) {
-        const float margin = t.triangle_margin[k] + row.offset;
-        const auto positive = hn::Gt(at(t.triangle[k], false), hn::Set(df, margin));
-        const auto negative = hn::Lt(at(t.triangle[k], true), hn::Set(df, -margin));
-        unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
-        const auto included = t.light_above[k] ? negative : positive;
-        weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),
-                                                    hn::Set(di, t.weight[k])));
+  // Per plane, the thresholds -(margin + offset) and margin + offset, as the scalar twin.
+  float region_bound[kMaxRegionPlanes], triangle_bound[4];
+  for (int k = 0; k < t.region_count; ++k) region_bound[k] = -(t.region_margin[k] + box.offset);
+  for (int k = 0; k < t.triangle_count; ++k) triangle_bound[k] = t.triangle_margin[k] + box.offset;
+  for (int ty = box.ty0; ty <= box.ty1; ++ty) {
+    const auto y0 = hn::Set(df, float(ty * box.size) + 0.5f);
+    const auto y1 = hn::Set(df, float(std::min(ty * box.size + box.size, box.height)) - 0.5f);
+    const size_t row = size_t(ty) * size_t(box.columns);
+    for (int tx = box.tx0; tx <= box.tx1; tx += int(lanes)) {
+      const size_t n = std::min(lanes, size_t(box.tx1 - tx + 1));
+      const auto in_row = hn::FirstN(df, n);
+      // The row's last tiles from a padded copy: no read past the box.
+      HWY_ALIGN float tail_min[16] = {}, tail_max[16] = {};
+      const float* zmin_at = box.zmin + row + size_t(tx);
+      const float* zmax_at = box.zmax + row + size_t(tx);
+      if (n < lanes) {
+        std::copy(zmin_at, zmin_at + n, tail_min);
+        std::copy(zmax_at, zmax_at + n, tail_max);
+        zmin_at = tail_min;
+        zmax_at = tail_max;
       }
-      keep = hn::And(keep, hn::Or(unknown, hn::RebindMask(df, hn::Ne(weight, hn::Zero(di)))));
+      const auto zmin = hn::LoadU(df, zmin_at);
+      const auto zmax = hn::LoadU(df, zmax_at);
+      // float(tx * size) + 0.5 lane by lane, as the scalar twin (exact: small integers).
+      const auto x0 = hn::Add(hn::Mul(hn::Add(lane_index, hn::Set(df, float(tx))), size), half);
+      const auto x1 = hn::Min(hn::Add(x0, span), last_centre);
+      const auto covered = hn::And(in_row, hn::Gt(zmax, zero));
+      tested += int(hn::CountTrue(df, covered));
+      if (hn::AllFalse(df, covered)) continue;
+      auto at = [&](const float* p, bool high) {
+        const auto x = (p[0] >= 0.0f) == high ? x1 : x0;
+        const auto y = (p[1] >= 0.0f) == high ? y1 : y0;
+        const auto z = (p[2] >= 0.0f) == high ? zmax : zmin;
+        return hn::Add(
+            hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), x), hn::Mul(hn::Set(df, p[1]), y)),
+                    hn::Mul(hn::Set(df, p[2]), z)),
+            hn::Set(df, p[3]));
+      };
+      auto keep = covered;
+      for (int k = 0; k < t.region_count && !hn::AllFalse(df, keep); ++k)
+        keep = hn::And(keep, hn::Ge(at(t.region[k], true), hn::Set(df, region_bound[k])));
+      if (signs && !hn::AllFalse(df, keep)) {
+        auto unknown = hn::FirstN(df, 0);
+        auto weight = hn::Zero(di);
+        for (int k = 0; k < t.triangle_count; ++k) {
+          const auto positive =
+              hn::Gt(at(t.triangle[k], false), hn::Set(df, triangle_bound[k]));
+          const auto negative =
+              hn::Lt(at(t.triangle[k], true), hn::Set(df, -triangle_bound[k]));
+          unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
+          const auto included = t.light_above[k] ? negative : positive;
+          weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),
+                                                      hn::Set(di, t.weight[k])));
+        }
+        keep = hn::And(keep, hn::Or(unknown, hn::RebindMask(df, hn::Ne(weight, hn::Zero(di)))));
+      }
+      hn::StoreMaskBits(df, keep, bits);
+      uint64_t mask = 0;
+      for (size_t b = 0; b < (lanes + 7) / 8; ++b) mask |= uint64_t(bits[b]) << (8 * b);
+      for (; mask != 0; mask &= mask - 1)
+        kept[count++] = uint32_t(row) + uint32_t(tx + __builtin_ctzll(mask));
     }
-    hn::StoreMaskBits(df, keep, bits);
-    uint64_t mask = 0;
-    for (size_t b = 0; b < (lanes + 7) / 8; ++b) mask |= uint64_t(bits[b]) << (8 * b);
-    for (; mask != 0; mask &= mask - 1) kept[count++] = uint32_t(tx + __builtin_ctzll(mask));
   }
   return count;
 }
@@ -175,10 +187,10 @@ uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, boo
   return edgeCandidatesScalar(test, block);
 }
 
-int edgeTileCandidates(const EdgeScreenTest& test, const TileRow& row, uint32_t* kept,
+int edgeTileCandidates(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
                        int& tested, bool simd) {
-  if (useSimd(simd)) return HWY_DYNAMIC_DISPATCH(EdgeTileCandidatesSimd)(test, row, kept, tested);
-  return edgeTileCandidatesScalar(test, row, kept, tested);
+  if (useSimd(simd)) return HWY_DYNAMIC_DISPATCH(EdgeTileCandidatesSimd)(test, box, kept, tested);
+  return edgeTileCandidatesScalar(test, box, kept, tested);
 }
 
 }  // namespace penumbra
@@ -192,9 +204,9 @@ uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, boo
   return edgeCandidatesScalar(test, block);
 }
 
-int edgeTileCandidates(const EdgeScreenTest& test, const TileRow& row, uint32_t* kept,
+int edgeTileCandidates(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
                        int& tested, bool) {
-  return edgeTileCandidatesScalar(test, row, kept, tested);
+  return edgeTileCandidatesScalar(test, box, kept, tested);
 }
 
 }  // namespace penumbra
