@@ -104,7 +104,7 @@ TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
         const EdgeScreenTest test = randomTest(r, width, height);
         for (int box_index = 0; box_index < 4; ++box_index) {
           // A random box of tiles, or the whole grid.
-          TileBox box;
+          EdgeTileBox box;
           box.zmin = zmin.data();
           box.zmax = zmax.data();
           box.columns = columns;

@@ -401,7 +401,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
         // The region's screen box through the tile form of the pixels' quick reject
         // (edgeTileCandidates): a flat SIMD scan of the box's tiles, row by row.
         if (region.tx0 > region.tx1 || region.ty0 > region.ty1) continue;
-        TileBox box;
+        EdgeTileBox box;
         box.zmin = range.zmin.data();
         box.zmax = range.zmax.data();
         box.columns = bins.columns;
@@ -450,7 +450,8 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
           out[2] = float(d.z);
           return glm::length(d);
         };
-        const double ends_extent = std::max(fromLight(e.a, test.ends[0]), fromLight(e.b, test.ends[1]));
+        const double ends_extent =
+            std::max(fromLight(e.a, test.ends[0]), fromLight(e.b, test.ends[1]));
         for (int k = 0; k < region.triangle_count; ++k) {
           const EdgeTriangle& t = *region.triangle[size_t(k)];
           toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);

@@ -77,7 +77,7 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& test, const PixelBlock& bloc
 // tile is kept. (A point on one of the edge's triangles is on its plane, so the visible
 // triangle, which the pixels leave out of the weight, never has a sign over a box holding the
 // point.) SIMD over 4 to 16 tiles of a row with a scalar twin (same results).
-struct TileBox {
+struct EdgeTileBox {
   const float* zmin;
   const float* zmax;
   int columns;
@@ -88,9 +88,9 @@ struct TileBox {
 // Writes the kept tiles' indices (ty columns + tx) to `kept` (room for the box's tiles) in
 // ascending order and returns their number; `tested` gets the number of tiles that hold a
 // covered pixel.
-int edgeTileCandidates(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
+int edgeTileCandidates(const EdgeScreenTest& test, const EdgeTileBox& box, uint32_t* kept,
                        int& tested, bool simd);
-int edgeTileCandidatesScalar(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
+int edgeTileCandidatesScalar(const EdgeScreenTest& test, const EdgeTileBox& box, uint32_t* kept,
                              int& tested);
 
 }  // namespace penumbra

@@ -47,7 +47,7 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& t, const PixelBlock& block) 
   return out;
 }
 
-int edgeTileCandidatesScalar(const EdgeScreenTest& t, const TileBox& box, uint32_t* kept,
+int edgeTileCandidatesScalar(const EdgeScreenTest& t, const EdgeTileBox& box, uint32_t* kept,
                              int& tested) {
   int count = 0;
   tested = 0;

@@ -92,7 +92,7 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
   return out;
 }
 
-int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const TileBox& box, uint32_t* kept,
+int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const EdgeTileBox& box, uint32_t* kept,
                            int& tested) {
   const hn::CappedTag<float, 16> df;
   const hn::RebindToSigned<decltype(df)> di;
@@ -187,7 +187,7 @@ uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, boo
   return edgeCandidatesScalar(test, block);
 }
 
-int edgeTileCandidates(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
+int edgeTileCandidates(const EdgeScreenTest& test, const EdgeTileBox& box, uint32_t* kept,
                        int& tested, bool simd) {
   if (useSimd(simd)) return HWY_DYNAMIC_DISPATCH(EdgeTileCandidatesSimd)(test, box, kept, tested);
   return edgeTileCandidatesScalar(test, box, kept, tested);
@@ -204,7 +204,7 @@ uint64_t edgeCandidates(const EdgeScreenTest& test, const PixelBlock& block, boo
   return edgeCandidatesScalar(test, block);
 }
 
-int edgeTileCandidates(const EdgeScreenTest& test, const TileBox& box, uint32_t* kept,
+int edgeTileCandidates(const EdgeScreenTest& test, const EdgeTileBox& box, uint32_t* kept,
                        int& tested, bool) {
   return edgeTileCandidatesScalar(test, box, kept, tested);
 }
