@@ -18,11 +18,33 @@ namespace penumbra {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// The mask's lanes as bits, lane 0 lowest.
+template <class D, class M>
+HWY_INLINE uint64_t MaskBits(D d, M mask) {
+  HWY_ALIGN uint8_t bits[8] = {};
+  hn::StoreMaskBits(d, mask, bits);
+  uint64_t out = 0;
+  for (size_t b = 0; b < (hn::Lanes(d) + 7) / 8; ++b) out |= uint64_t(bits[b]) << (8 * b);
+  return out;
+}
+
+// `weight` plus w in the lanes where `where` holds (a float mask).
+template <class DI, class V, class M>
+HWY_INLINE V AddWhere(DI di, V weight, M where, int32_t w) {
+  return hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, where), hn::Set(di, w)));
+}
+
+// The lanes of `keep` that may see the edge as a silhouette: a triangle's sign unknown, or the
+// included triangles' weights not cancelling.
+template <class DF, class DI, class M, class V>
+HWY_INLINE M MaySeeSilhouette(DF df, DI di, M keep, M unknown, V weight) {
+  return hn::And(keep, hn::Or(unknown, hn::RebindMask(df, hn::Ne(weight, hn::Zero(di)))));
+}
+
 uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
   const hn::CappedTag<float, 16> df;
   const hn::RebindToSigned<decltype(df)> di;
   const size_t lanes = hn::Lanes(df);
-  HWY_ALIGN uint8_t bits[8];
   uint64_t out = 0;
   for (size_t i = 0; i < size_t(kBlockPixels); i += lanes) {
     const uint64_t active = (block.active >> i) & (lanes >= 64 ? ~0ull : ((1ull << lanes) - 1));
@@ -72,22 +94,15 @@ uint64_t EdgeCandidatesSimd(const EdgeScreenTest& t, const PixelBlock& block) {
                       hn::Mul(hn::Load(df, block.slack + i), hn::Set(df, t.cut_extent[k]))),
               hn::Zero(df));
           unknown = hn::Or(unknown, hn::Not(in_front));
-          weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, positive),
-                                                      hn::Set(di, t.weight[k])));
-          weight = hn::Sub(weight, hn::IfThenElseZero(hn::RebindMask(di, negative),
-                                                      hn::Set(di, t.weight[k])));
+          weight = AddWhere(di, weight, positive, t.weight[k]);
+          weight = AddWhere(di, weight, negative, -t.weight[k]);
         } else {
-          const auto included = t.light_above[k] ? negative : positive;
-          weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),
-                                                      hn::Set(di, t.weight[k])));
+          weight = AddWhere(di, weight, t.light_above[k] ? negative : positive, t.weight[k]);
         }
       }
-      keep = hn::And(keep, hn::Or(unknown, hn::RebindMask(df, hn::Ne(weight, hn::Zero(di)))));
+      keep = MaySeeSilhouette(df, di, keep, unknown, weight);
     }
-    hn::StoreMaskBits(df, keep, bits);
-    uint64_t mask = 0;
-    for (size_t b = 0; b < (lanes + 7) / 8; ++b) mask |= uint64_t(bits[b]) << (8 * b);
-    out |= (mask & active) << i;
+    out |= (MaskBits(df, keep) & active) << i;
   }
   return out;
 }
@@ -97,7 +112,6 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const EdgeTileBox& box, uint
   const hn::CappedTag<float, 16> df;
   const hn::RebindToSigned<decltype(df)> di;
   const size_t lanes = hn::Lanes(df);
-  HWY_ALIGN uint8_t bits[8];
   int count = 0;
   tested = 0;
   const auto zero = hn::Zero(df);
@@ -156,16 +170,11 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const EdgeTileBox& box, uint
           const auto negative =
               hn::Lt(at(t.triangle[k], true), hn::Set(df, -triangle_bound[k]));
           unknown = hn::Or(unknown, hn::Not(hn::Or(positive, negative)));
-          const auto included = t.light_above[k] ? negative : positive;
-          weight = hn::Add(weight, hn::IfThenElseZero(hn::RebindMask(di, included),
-                                                      hn::Set(di, t.weight[k])));
+          weight = AddWhere(di, weight, t.light_above[k] ? negative : positive, t.weight[k]);
         }
-        keep = hn::And(keep, hn::Or(unknown, hn::RebindMask(df, hn::Ne(weight, hn::Zero(di)))));
+        keep = MaySeeSilhouette(df, di, keep, unknown, weight);
       }
-      hn::StoreMaskBits(df, keep, bits);
-      uint64_t mask = 0;
-      for (size_t b = 0; b < (lanes + 7) / 8; ++b) mask |= uint64_t(bits[b]) << (8 * b);
-      for (; mask != 0; mask &= mask - 1)
+      for (uint64_t mask = MaskBits(df, keep); mask != 0; mask &= mask - 1)
         kept[count++] = uint32_t(row) + uint32_t(tx + __builtin_ctzll(mask));
     }
   }
