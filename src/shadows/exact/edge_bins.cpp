@@ -246,6 +246,9 @@ class RegionBuilder {
     dvec3 candidates[7] = {dvec3(1, 0, 0), dvec3(-1, 0, 0), dvec3(0, 1, 0), dvec3(0, -1, 0),
                            dvec3(0, 0, 1), dvec3(0, 0, -1), dvec3(0.0)};
     for (int k = 0; k < end_count; ++k) candidates[6] += glm::normalize(ends[k] - c_);
+    double direction_length[12];
+    for (int j = 0; j < direction_count; ++j)
+      direction_length[j] = glm::length(world_directions[j]);
     double best_length = std::numeric_limits<double>::infinity();
     dvec3 w(0.0);
     double h = 0.0;
@@ -255,19 +258,23 @@ class RegionBuilder {
       const dvec3 u = candidate / length;
       const double top = glm::dot(glm::max(u, dvec3(0.0)), reach_max_) +
                          glm::dot(glm::min(u, dvec3(0.0)), reach_min_);
-      double longest = 0.0;  // the largest cone parameter, (h - w.v) / (w.d)
-      for (int j = 0; j < direction_count && longest < best_length; ++j) {
-        const dvec3& d = world_directions[j];
-        const double along = glm::dot(u, d);
-        if (!(along > 1e-6 * glm::length(d))) {
-          longest = best_length;
-          break;
-        }
-        for (int k = 0; k < end_count; ++k) {
-          const double gap = top - glm::dot(u, ends[k]);
-          longest = gap >= 0.0 ? std::max(longest, gap / along) : best_length;
-        }
+      // The largest cone parameter (h - w.v) / (w.d) over the corners v and directions d. Every
+      // direction must move along w and every corner lie below h; division is monotone, so the
+      // largest quotient is the largest gap over the smallest step, the same double.
+      bool usable = true;
+      double smallest_along = std::numeric_limits<double>::infinity(), largest_gap = 0.0;
+      for (int j = 0; j < direction_count && usable; ++j) {
+        const double along = glm::dot(u, world_directions[j]);
+        usable = along > 1e-6 * direction_length[j];
+        smallest_along = std::min(smallest_along, along);
       }
+      for (int k = 0; k < end_count && usable; ++k) {
+        const double gap = top - glm::dot(u, ends[k]);
+        usable = gap >= 0.0;
+        largest_gap = std::max(largest_gap, gap);
+      }
+      if (!usable) continue;
+      const double longest = largest_gap / smallest_along;
       if (longest < best_length) {
         best_length = longest;
         w = u;
