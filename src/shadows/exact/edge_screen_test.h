@@ -52,7 +52,11 @@ struct EdgeScreenTest {
 // corner is certainly in front where v'.q + reach + slack * (|v'| + r) < 0.
 // `offset` is the farthest the pixel's shaded point lies from its depth-buffer point, over the
 // point's w: the largest possible before the shaded point is known (EdgeBins::offset), the
-// distance itself, rounded up, once it is.
+// distance itself, rounded up, once it is. The shaded point is the depth-buffer point's
+// closest point on the visible triangle, lifted off it by float rounding (ray_origin.h), so
+// the depth-buffer point lies within its offset (and the lift, far inside the planes' rounding
+// margins) of that triangle's plane: the visible triangle, which the exact test leaves out of
+// the weight, never has a sign here either.
 struct alignas(64) PixelBlock {
   float sx[kBlockPixels], sy[kBlockPixels], z[kBlockPixels];
   float offset[kBlockPixels];
