@@ -229,8 +229,8 @@ template <class VertexFn>
 void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, int height,
                 const ClipPlanes& planes, const VertexFn& vertex, std::vector<SetupTriangle>& out,
                 std::vector<uint32_t>* sources) {
-  for (size_t t = begin; t < end; ++t) {
-    if (sources != nullptr) sources->resize(out.size(), uint32_t(t - 1));
+  // Sets up input triangle t into `out` (none, one, or a clipped fan of pieces).
+  const auto setupInput = [&](size_t t) {
     const uint8_t flags = tris.flags.empty() ? 0 : tris.flags[t];
     const uint32_t* idx = &tris.indices[t * 3];
     const ClassifiedVertex& c0 = vertex(idx[0]);
@@ -241,17 +241,20 @@ void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, 
       SetupTriangle s;
       if (setupOne(c0.screen, c1.screen, c2.screen, width, height, tris.payload[t], flags, s))
         out.push_back(withOwners(tris, t, s));
-      continue;
+      return;
     }
     // NaN or infinite input covers nothing, and must not crash.
-    if (any & kNonFinite) continue;
+    if (any & kNonFinite) return;
     // Inside every plane but on the eye plane (w = 0): nothing to draw, as with clipping.
-    if ((any & kOutsideBits) == 0) continue;
+    if ((any & kOutsideBits) == 0) return;
     // All three outside one plane: so is the whole triangle (trivial reject).
-    if (c0.code & c1.code & c2.code & kOutsideBits) continue;
+    if (c0.code & c1.code & c2.code & kOutsideBits) return;
     setupClipped(tris, t, planes, width, height, flags, out);
+  };
+  for (size_t t = begin; t < end; ++t) {
+    setupInput(t);
+    if (sources != nullptr) sources->resize(out.size(), uint32_t(t));  // t's pieces
   }
-  if (sources != nullptr) sources->resize(out.size(), uint32_t(end - 1));
 }
 
 }  // namespace

@@ -66,7 +66,8 @@ bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light&
   return !same_side;
 }
 
-SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SortedSamples& samples) {
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f,
+                        const SortedSamples& samples) {
   SampleRuns all;
   all.end[0] = uint32_t(samples.padded);
   double angle[3];
@@ -87,13 +88,14 @@ SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const Sor
 }
 
 // Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
-bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t) {
-  const dvec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];
+bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const dvec3& a,
+                         const dvec3& b, const dvec3& c) {
+  const dvec3 e1 = b - a, e2 = c - a;
   const dvec3 q = glm::cross(d, e2);
   const double det = glm::dot(e1, q);
   if (det == 0.0) return false;  // the segment lies in the triangle's plane: crosses nothing
   const double inv = 1.0 / det;
-  const dvec3 s = o - t.v[0];
+  const dvec3 s = o - a;
   const double u = glm::dot(s, q) * inv;
   if (u < 0.0 || u > 1.0) return false;
   const dvec3 r = glm::cross(s, e1);
@@ -150,12 +152,8 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   bool counted = f.start.intoSurface(c);
   if (triangle.primitive == primitive && triangle.length > 0.0) {
     if (replayed) {
-      CuttingTriangle visible;
-      visible.id = primitive;
-      visible.v[0] = triangle.a;
-      visible.v[1] = triangle.b;
-      visible.v[2] = triangle.c;
-      counted = segmentHitsTriangle(f.p, c - f.p, 1.0 - kTfarShrink, visible);
+      counted =
+          segmentHitsTriangle(f.p, c - f.p, 1.0 - kTfarShrink, triangle.a, triangle.b, triangle.c);
     } else if (counted) {
       counted = pointOnTriangle(f.start.depth_point, triangle.a, triangle.b, triangle.c);
     }
@@ -222,13 +220,11 @@ int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours
   for (const uint32_t id : neighbours) {
     const auto [m, t] = scene.locateTriangle(id);
     const Mesh& mesh = scene.meshes[m];
-    CuttingTriangle tri;
-    tri.id = id;
-    for (int k = 0; k < 3; ++k) tri.v[k] = dvec3(mesh.vertex(t, k));
-    if (!segmentHitsTriangle(eye_position, f.p - eye_position, 1.0, tri)) continue;
-    const dvec3 n = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
-    const double at_eye = glm::dot(n, eye_position - tri.v[0]);
-    const double at_centre = glm::dot(n, centre - tri.v[0]);
+    const dvec3 a(mesh.vertex(t, 0)), b(mesh.vertex(t, 1)), c(mesh.vertex(t, 2));
+    if (!segmentHitsTriangle(eye_position, f.p - eye_position, 1.0, a, b, c)) continue;
+    const dvec3 n = glm::cross(b - a, c - a);
+    const double at_eye = glm::dot(n, eye_position - a);
+    const double at_centre = glm::dot(n, centre - a);
     if (at_centre == 0.0) continue;  // edge-on to the centre: no volume
     shift += (at_eye > 0.0) == (at_centre > 0.0) ? 1 : -1;
   }
@@ -254,13 +250,8 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
     for (uint32_t k = 0; k < e.triangle_count; ++k) {
       const EdgeTriangle& t = triangles[e.first_triangle + k];
       if (t.id == f.primitive) continue;
-      CuttingTriangle tri;
-      tri.id = t.id;
-      tri.v[0] = e.a;
-      tri.v[1] = e.b;
-      tri.v[2] = t.opposite;
       const int32_t at_origin =
-          int32_t(segmentHitsTriangle(f.p, centre - f.p, 1.0 - kTfarShrink, tri));
+          int32_t(segmentHitsTriangle(f.p, centre - f.p, 1.0 - kTfarShrink, e.a, e.b, t.opposite));
       // A depth-buffer point on the neighbour's plane (a smooth surface, a flat one split in
       // two) is a point of the neighbour's surface: the stencil counted the neighbour as it
       // counts the visible triangle, when the point lies on it and the centre is behind it.
@@ -270,7 +261,8 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
               ? int32_t((glm::dot(t.normal, centre) + t.offset > 0.0) !=
                             (glm::dot(t.normal, eye) + t.offset > 0.0) &&
                         pointOnTriangle(from, e.a, e.b, t.opposite))
-              : int32_t(segmentHitsTriangle(from, centre - from, 1.0 - kTfarShrink, tri));
+              : int32_t(segmentHitsTriangle(from, centre - from, 1.0 - kTfarShrink, e.a, e.b,
+                                            t.opposite));
       shift += at_origin - stencil_counted;
     }
     return shift;

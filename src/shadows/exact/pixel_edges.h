@@ -70,10 +70,16 @@ bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light&
 
 // The blocks of samples whose angle around the light centre the triangle's projection from the
 // point can reach (all of them when it surrounds the centre or reaches behind the point).
-SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f, const SortedSamples& samples);
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f,
+                        const SortedSamples& samples);
 
-// Does o + t d, 0 < t < t_max, cross the triangle (Moller and Trumbore 1997, in double)?
-bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const CuttingTriangle& t);
+// Does o + t d, 0 < t < t_max, cross the triangle abc (Moller and Trumbore 1997, in double)?
+bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max, const dvec3& a,
+                         const dvec3& b, const dvec3& c);
+inline bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max,
+                                const CuttingTriangle& t) {
+  return segmentHitsTriangle(o, d, t_max, t.v[0], t.v[1], t.v[2]);
+}
 
 // Sets up the frame of a pixel; false when its visibility is already known (`known`).
 // `triangle`: the work item's last visible triangle, for RayOrigins::start.
