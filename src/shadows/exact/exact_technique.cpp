@@ -249,16 +249,27 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
       bool tile_cuts = false;
       for (const uint32_t* it = begin; it != end && !tile_cuts; ++it)
         tile_cuts = bins.tests[*it].any_cuts;
-      // A pixel's frame (setupPixel); on a z-pass volume with the caps of the visible
-      // triangle's neighbours its origin may lie behind (capCrossings).
-      const auto setUp = [&](int px, int py, float depth, uint32_t id, PixelFrame& f,
-                             float& known) {
+      PixelBlock& block = scratch.block;
+      // The frame of the block's pixel i (setupPixel); on a z-pass volume with the caps of the
+      // visible triangle's neighbours its origin may lie behind (capCrossings). Its quick-reject
+      // offset becomes how far its shaded point lies from its depth-buffer point, over the
+      // point's w (PixelBlock::offset), rounded up: most points lie on the pixel's own ray, and
+      // the reject then keeps only the edges that can reach the point itself. Never above the
+      // offset the tiles were binned with.
+      const auto setUp = [&](int i, float& known) {
+        PixelFrame& f = scratch.frames[i];
+        const uint32_t id = f.primitive;
         const bool z_pass = replayed(id);
-        if (!setupPixel(px, py, depth, id, f.stencil, origins, light, scratch.origin_triangle,
-                        z_pass, f, known))
+        if (!setupPixel(scratch.px[i], scratch.py[i], block.z[i], id, f.stencil, origins, light,
+                        scratch.origin_triangle, z_pass, f, known))
           return false;
         const double apart = glm::length(f.p - f.start.depth_point);
         f.quad_reach = 4.0 * apart + 1e-6 * glm::length(f.p - eye_position);
+        const double w = (view_projection * dvec4(f.start.depth_point, 1.0)).w;
+        const double offset = apart / w * (1.0 + 1e-5);
+        block.offset[i] = offset < double(bins.offset)
+                              ? float(offset) * (1.0f + 1e-6f) + 1e-30f
+                              : bins.offset;
         // Only an origin near the triangle's border can hide behind a neighbour: the eye sees
         // the depth-buffer point, and a neighbour between the two rays comes within their
         // distance of the origin.
@@ -276,21 +287,14 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         }
         return true;
       };
-      // How far the pixel's shaded point lies from its depth-buffer point, over the point's w
-      // (PixelBlock::offset), rounded up; most points lie on the pixel's own ray, and the quick
-      // reject then keeps only the edges that can reach the point itself. Never above the
-      // offset the tiles were binned with.
-      const auto shadedOffset = [&](const PixelFrame& f) {
-        const double w = (view_projection * dvec4(f.start.depth_point, 1.0)).w;
-        const double apart = glm::length(f.p - f.start.depth_point);
-        const double offset = apart / w * (1.0 + 1e-5);
-        return offset < double(bins.offset) ? float(offset) * (1.0f + 1e-6f) + 1e-30f
-                                            : bins.offset;
+      // A pixel clear of the light, set up once an edge may reach it.
+      const auto setUpIfClear = [&](int i) {
+        float known = 0.0f;  // never set: a clear pixel is outside the light
+        if (!scratch.frames[i].ready) setUp(i, known);
       };
       // Blocks of up to 64 pixels, row after row of the tile.
       int x = x0, y = y0;
       while (y < y1) {
-        PixelBlock& block = scratch.block;
         block.active = 0;
         std::fill(std::begin(block.offset), std::end(block.offset), bins.offset);
         int used = 0;
@@ -311,11 +315,10 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           f.primitive = id;
           if (!away.clearOfLight(id)) {
             float known = 0.0f;
-            if (!setUp(x, y, block.z[i], id, f, known)) {
+            if (!setUp(i, known)) {
               soft.at(x, y) = known;
               continue;
             }
-            block.offset[i] = shadedOffset(f);
           }
           block.active |= uint64_t(1) << i;
           scratch.edges[i].clear();
@@ -361,12 +364,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             ++work.exact;
             PixelEdge pixel_edge;
             int32_t weight = 0;
+            setUpIfClear(i);
             PixelFrame& f = scratch.frames[i];
-            if (!f.ready) {
-              float known = 0.0f;  // never set: a clear pixel is outside the light
-              setUp(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f, known);
-              block.offset[i] = shadedOffset(f);
-            }
             bool zfail = false;
             f.centre_count +=
                 quadCountShift(edges.edges[*it], replay, scratch.px[i], scratch.py[i], f, zfail);
@@ -396,11 +395,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             candidates &= candidates - 1;
             PixelFrame& f = scratch.frames[i];
             if (t.id == f.primitive) continue;
-            if (!f.ready) {
-              float known = 0.0f;  // never set: a clear pixel is outside the light
-              setUp(scratch.px[i], scratch.py[i], block.z[i], f.primitive, f, known);
-              block.offset[i] = shadedOffset(f);
-            }
+            setUpIfClear(i);
             // Outside the cone, or in front of the light, where the edge sums count it.
             if (classifyCutting(t.v[0], t.v[1], t.v[2], f) != CuttingPlace::Across) continue;
             if (!mayBlockSamples(t, f, light)) continue;
