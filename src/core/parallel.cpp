@@ -1,6 +1,7 @@
 #include "core/parallel.h"
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -25,6 +26,10 @@ void parallelFor(size_t count, const std::function<void(size_t)>& fn) {
                     [&](const tbb::blocked_range<size_t>& r) {
                       for (size_t i = r.begin(); i != r.end(); ++i) fn(i);
                     });
+}
+
+void parallelInvoke(const std::function<void()>& a, const std::function<void()>& b) {
+  tbb::parallel_invoke(a, b);
 }
 
 int workerCount() {

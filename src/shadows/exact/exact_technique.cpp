@@ -195,23 +195,28 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   stencil_options.skip_own_quads = true;
   StencilQuads quads;
   stencil_options.quads = &quads;
-  const Image<int32_t> stencil =
-      shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
-
+  // The stencil and the potential edges with their tiles depend only on the eye buffers: they
+  // run at once (their counters and timings kept apart, then added; their passes overlap in
+  // time, so the frame is shorter than the passes' sum).
+  Image<int32_t> stencil;
   PotentialEdges edges;
-  {
-    PassTimer timer(stats, "edges");
-    edges = potentialEdges(scene_, geometry_, light);
-    stats.wedges += edges.edges.size();
-  }
   EdgeBins bins;
-  {
-    PassTimer timer(stats, "binning");
-    bins = binEdges(edges, light, view, eye.depth, options_.tile_level,
-                    kMaxOriginOffsetFootprints, bounds_, context.simd);
-    stats.tiles_tested += bins.tiles_tested;
-    stats.tiles_culled += bins.tiles_culled;
-  }
+  Stats edge_stats;
+  parallelInvoke(
+      [&] { stencil = shadowStencil(scene_, light.center, view, eye, stencil_options, stats); },
+      [&] {
+        {
+          PassTimer timer(edge_stats, "edges");
+          edges = potentialEdges(scene_, geometry_, light);
+          edge_stats.wedges += edges.edges.size();
+        }
+        PassTimer timer(edge_stats, "binning");
+        bins = binEdges(edges, light, view, eye.depth, options_.tile_level,
+                        kMaxOriginOffsetFootprints, bounds_, context.simd);
+        edge_stats.tiles_tested += bins.tiles_tested;
+        edge_stats.tiles_culled += bins.tiles_culled;
+      });
+  stats.add(edge_stats);
 
   Image<float> soft(width, height, 1.0f);
   {
