@@ -91,8 +91,9 @@ TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
       const std::vector<float> depth = randomDepth(r, width, height);
       // Per-tile depth range of the covered pixels (the background's 0 included, as
       // DepthBuffer's pyramid has it: a tile with background reaches z = 0).
-      std::vector<float> zmin(size_t(columns) * size_t(rows), 1.0f),
-          zmax(size_t(columns) * size_t(rows), 0.0f);
+      // Padded as edgeTileCandidates requires (kTileBoxPadding).
+      std::vector<float> zmin(size_t(columns) * size_t(rows) + kTileBoxPadding, 1.0f),
+          zmax(size_t(columns) * size_t(rows) + kTileBoxPadding, 0.0f);
       for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
           const size_t t = size_t(y / kTile) * size_t(columns) + size_t(x / kTile);

@@ -393,7 +393,12 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   };
   // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
   // item order within a tile: chunks in order, then a counting sort by tile).
+  // The tiles' depth ranges with the padding edgeTileCandidates reads past the last tile.
   const TileDepthRange& range = depth.tileRange(level);
+  std::vector<float> zmin(range.zmin.size() + kTileBoxPadding, 0.0f);
+  std::vector<float> zmax(range.zmax.size() + kTileBoxPadding, 0.0f);
+  std::copy_n(range.zmin.data(), range.zmin.size(), zmin.begin());
+  std::copy_n(range.zmax.data(), range.zmax.size(), zmax.begin());
   auto binAll = [&](size_t count, const auto& regionOf, const std::vector<EdgeScreenTest>& tests,
                     std::vector<uint32_t>& begin, std::vector<uint32_t>& items) {
     const size_t chunk_size = std::clamp(count / 64, kMinChunk, kChunk);
@@ -409,8 +414,8 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
         // (edgeTileCandidates): a flat SIMD scan of the box's tiles, row by row.
         if (region.tx0 > region.tx1 || region.ty0 > region.ty1) continue;
         EdgeTileBox box;
-        box.zmin = range.zmin.data();
-        box.zmax = range.zmax.data();
+        box.zmin = zmin.data();
+        box.zmax = zmax.data();
         box.columns = bins.columns;
         box.tx0 = region.tx0;
         box.tx1 = region.tx1;

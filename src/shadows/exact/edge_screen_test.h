@@ -81,6 +81,9 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& test, const PixelBlock& bloc
 // tile is kept. (A point on one of the edge's triangles is on its plane, so the visible
 // triangle, which the pixels leave out of the weight, never has a sign over a box holding the
 // point.) SIMD over 4 to 16 tiles of a row with a scalar twin (same results).
+// Both arrays must be readable kTileBoxPadding entries past the last tile of the grid (the
+// SIMD twin loads whole vectors of a row and masks off the lanes past the box).
+inline constexpr int kTileBoxPadding = 16;
 struct EdgeTileBox {
   const float* zmin;
   const float* zmax;

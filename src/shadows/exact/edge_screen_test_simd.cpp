@@ -131,18 +131,9 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const EdgeTileBox& box, uint
     for (int tx = box.tx0; tx <= box.tx1; tx += int(lanes)) {
       const size_t n = std::min(lanes, size_t(box.tx1 - tx + 1));
       const auto in_row = hn::FirstN(df, n);
-      // The row's last tiles from a padded copy: no read past the box.
-      HWY_ALIGN float tail_min[16] = {}, tail_max[16] = {};
-      const float* zmin_at = box.zmin + row + size_t(tx);
-      const float* zmax_at = box.zmax + row + size_t(tx);
-      if (n < lanes) {
-        std::copy(zmin_at, zmin_at + n, tail_min);
-        std::copy(zmax_at, zmax_at + n, tail_max);
-        zmin_at = tail_min;
-        zmax_at = tail_max;
-      }
-      const auto zmin = hn::LoadU(df, zmin_at);
-      const auto zmax = hn::LoadU(df, zmax_at);
+      // Lanes past the box's row read the next tiles (or the arrays' padding): masked off.
+      const auto zmin = hn::LoadU(df, box.zmin + row + size_t(tx));
+      const auto zmax = hn::LoadU(df, box.zmax + row + size_t(tx));
       // float(tx * size) + 0.5 lane by lane, as the scalar twin (exact: small integers).
       const auto x0 = hn::Add(hn::Mul(hn::Add(lane_index, hn::Set(df, float(tx))), size), half);
       const auto x1 = hn::Min(hn::Add(x0, span), last_centre);
