@@ -2,12 +2,16 @@
 // run time (HWY_DYNAMIC_DISPATCH). Same steps, same operation order, same results.
 #include "raster/tile_kernels.h"
 
+#include <algorithm>
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/tile_kernels_simd.cpp"
 #include <hwy/foreach_target.h>  // re-includes this file once per target
 #include <hwy/highway.h>
+
+#include "raster/row_spans_simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace penumbra {
@@ -95,12 +99,17 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
                                                 hn::Set(di, e.dx[1] * lanes),
                                                 hn::Set(di, e.dx[2] * lanes)};
   const auto minus_one = hn::Set(di, -1);
+  // Each row's span, found for kSpanRows rows at a time (row_spans_simd-inl.h).
+  int32_t span_lo[kSpanArray], span_hi[kSpanArray];
   for (int y = y_lo; y <= y_hi; ++y) {
+    const int row_in_batch = (y - y_lo) % kSpanRows;
+    if (row_in_batch == 0)
+      SpansOfRows(e, y, std::min(kSpanRows, y_hi - y + 1), span_lo, span_hi);
+    const int x_lo = span_lo[row_in_batch], x_hi = span_hi[row_in_batch];
+    if (x_lo > x_hi) continue;
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
-    int x_lo, x_hi;
-    if (!spans.span(row.start, x_lo, x_hi)) continue;
     const float* depth_row = target.depth + size_t(y - target.y0) * target.stride;
     int32_t* stencil_row = target.stencil + size_t(y - target.y0) * target.stride;
     const int rx_lo = x_lo - e.tx0;

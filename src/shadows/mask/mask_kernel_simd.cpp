@@ -1,9 +1,11 @@
 // SIMD twin of mask_kernel_scalar.cpp, compiled once per CPU target by Highway and chosen at run
 // time (HWY_DYNAMIC_DISPATCH). Same steps and integer operations, same results. The pixel walk
-// is the stencil kernel's (raster/tile_kernels_simd.cpp): rows and spans from RowSpans, edge
-// values stepped per vector, the depth rule in float lanes; the 8-bit values are widened to
-// 32-bit lanes for the blend and narrowed back.
+// is the stencil kernel's (raster/tile_kernels_simd.cpp): rows from RowSpans, their spans a
+// batch at a time (raster/row_spans_simd-inl.h), edge values stepped per vector, the depth rule
+// in float lanes; the 8-bit values are widened to 32-bit lanes for the blend and narrowed back.
 #include "shadows/mask/mask_kernel.h"
+
+#include <algorithm>
 
 #include "core/simd_dispatch.h"
 
@@ -13,6 +15,8 @@
 #define HWY_TARGET_INCLUDE "shadows/mask/mask_kernel_simd.cpp"
 #include <hwy/foreach_target.h>  // re-includes this file once per target
 #include <hwy/highway.h>
+
+#include "raster/row_spans_simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace penumbra {
@@ -49,14 +53,19 @@ void MaskKernelSimd(const TileEdges& e, MaskBlend blend, DepthRule rule,
   const RowSpans spans(e);
   int y_lo, y_hi;
   if (!spans.rows(y_lo, y_hi)) return;
+  // Each row's span, found for kSpanRows rows at a time (raster/row_spans_simd-inl.h).
+  int32_t span_lo[kSpanArray], span_hi[kSpanArray];
   uint64_t covered = 0, writes = 0;
   for (int y = y_lo; y <= y_hi; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const int32_t start[3] = {e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry,
                               e.e0[2] + e.dy[2] * ry};
-    int x_lo, x_hi;
-    if (!spans.span(start, x_lo, x_hi)) continue;
+    const int row_in_batch = (y - y_lo) % kSpanRows;
+    if (row_in_batch == 0)
+      SpansOfRows(e, y, std::min(kSpanRows, y_hi - y + 1), span_lo, span_hi);
+    const int x_lo = span_lo[row_in_batch], x_hi = span_hi[row_in_batch];
+    if (x_lo > x_hi) continue;
     const size_t row_offset = size_t(y - target.y0) * size_t(target.stride);
     const float* depth_row = target.depth + row_offset;
     const int rx_lo = x_lo - e.tx0;

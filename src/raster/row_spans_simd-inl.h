@@ -1,0 +1,75 @@
+// Per-target helper of the pixel kernels (tile_kernels_simd.cpp): RowSpans::span for a run of
+// rows at once, several rows per SIMD step in double, the same operations lane by lane, so the
+// same columns. Shadow volume quads seen nearly edge-on are slivers that cover about one pixel
+// per row of their rects: a kernel there spends most of its time finding each row's span, one
+// row at a time. Included once per Highway target (the include guard toggles with
+// HWY_TARGET_TOGGLE).
+#if defined(PENUMBRA_ROW_SPANS_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef PENUMBRA_ROW_SPANS_SIMD_INL_H_
+#undef PENUMBRA_ROW_SPANS_SIMD_INL_H_
+#else
+#define PENUMBRA_ROW_SPANS_SIMD_INL_H_
+#endif
+
+#include <cstdint>
+
+#include <hwy/highway.h>
+
+#include "raster/tile_kernels.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace penumbra {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Rows per call of SpansOfRows; the arrays it fills need kSpanRows + 8 entries (a last step
+// may run past `count`).
+inline constexpr int kSpanRows = 32;
+inline constexpr int kSpanArray = kSpanRows + 8;
+
+// For rows y0 .. y0 + count - 1 of e's rect (count <= kSpanRows): x_lo[k], x_hi[k] as
+// RowSpans::span gives them for row y0 + k (image columns), or x_lo[k] > x_hi[k] where it
+// finds no pixel. Per lane: the row's edge values at the tile origin's column in int32 as the
+// kernels have them, then in double -r / dx rounded outwards, as span() does.
+HWY_INLINE void SpansOfRows(const TileEdges& e, int y0, int count, int32_t* x_lo,
+                            int32_t* x_hi) {
+  const hn::CappedTag<double, 8> dd;
+  const hn::Rebind<int32_t, decltype(dd)> di;
+  const int lanes = int(hn::Lanes(dd));
+  const double first = double(e.x0 - e.tx0), last = double(e.x1 - e.tx0);
+  double inverse_dx[3];
+  for (int i = 0; i < 3; ++i) inverse_dx[i] = e.dx[i] != 0 ? 1.0 / double(e.dx[i]) : 0.0;
+  const auto zero = hn::Zero(dd);
+  for (int k = 0; k < count; k += lanes) {
+    const auto ry = hn::Add(hn::Iota(di, 0), hn::Set(di, y0 + k - e.ty0));
+    auto lo = hn::Set(dd, first), hi = hn::Set(dd, last);
+    auto empty = hn::Lt(zero, zero);  // all false
+    for (int i = 0; i < 3; ++i) {
+      // e0 + dy ry in int32, exactly as the row loop computes it, then in double.
+      const auto r = hn::PromoteTo(dd, hn::Add(hn::Set(di, e.e0[i]), hn::Mul(hn::Set(di, e.dy[i]), ry)));
+      if (e.dx[i] == 0) {
+        empty = hn::Or(empty, hn::Lt(r, zero));
+        continue;
+      }
+      const auto at = hn::Mul(hn::Neg(r), hn::Set(dd, inverse_dx[i]));  // where the value is 0
+      if (e.dx[i] > 0)
+        lo = hn::Max(lo, hn::Floor(at));
+      else
+        hi = hn::Min(hi, hn::Ceil(at));
+    }
+    // Empty where a dx = 0 edge is negative or the bounds cross; lo and hi are clamped to the
+    // rect's columns (plus one) before the conversion to int.
+    empty = hn::Or(empty, hn::Not(hn::Le(lo, hi)));
+    lo = hn::IfThenElse(empty, hn::Set(dd, 1.0), hn::Min(lo, hn::Set(dd, last)));
+    hi = hn::IfThenElse(empty, zero, hn::Max(hi, hn::Set(dd, first)));
+    const auto origin = hn::Set(di, e.tx0);
+    hn::StoreU(hn::Add(hn::DemoteTo(di, lo), origin), di, x_lo + k);
+    hn::StoreU(hn::Add(hn::DemoteTo(di, hi), origin), di, x_hi + k);
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace penumbra
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard
