@@ -74,6 +74,9 @@ class RegionBuilder {
       region.triangle_count = int(e.triangle_count);
     }
     const dvec3 a = e.a, b = e.b;
+    // The pyramid first (see below): of the points the tile test lets through, it rejects most,
+    // so the rejects, which stop once no point is left, mostly evaluate it alone.
+    pyramid(region, 0.5 * (a + b), 0.5 * glm::length(b - a));
     const dvec3 u = glm::normalize(b - a);
     // The two planes through the edge's line tangent to the ball: seen along the edge, the
     // region is the cone of rays from the edge away from the light's disk.
@@ -93,8 +96,7 @@ class RegionBuilder {
     endPlane(region, b, -u);
     // Those planes leave a wide region for an edge whose line passes near the ball (no
     // tangent planes and a half-space where it passes through), so the region is also bounded
-    // as that of the ball around the edge (pyramid).
-    pyramid(region, 0.5 * (a + b), 0.5 * glm::length(b - a));
+    // as that of the ball around the edge (the pyramid, added first).
     const dvec3 ends[2] = {a, b};
     screenBox(region, ends, 2);
     return region;
