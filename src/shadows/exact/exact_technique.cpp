@@ -111,6 +111,10 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
   // the raster passes, and the count is 0 there.
   if (!f.ready) return f.stencil <= 0 ? 1.0f : 0.0f;  // clear of the light, and no edge
   const int32_t centre_count = std::max(f.centre_count, 0);
+  // No sample's count can come down to 0 (the edges move it by at most `reach`, cutting
+  // triangles only add): every sample is blocked, whichever side of the visible triangle's
+  // plane it lies on, so the umbra skips the test below.
+  if (centre_count > f.reach) return 0.0f;
   const dvec3 c(light.center);
   const double r = light.radius;
   const int n = samples_.n;
@@ -132,10 +136,8 @@ float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<Pixel
       into_count += into;
     }
   }
-  if (edges.empty() && cutting.empty())
-    return centre_count == 0 ? float(n - into_count) / float(n) : 0.0f;
-  // No sample's count can come down to 0 (cutting triangles only add).
-  if (centre_count > f.reach) return 0.0f;
+  // No edge and no cutting triangle: reach 0, and centre_count 0 by the test above.
+  if (edges.empty() && cutting.empty()) return float(n - into_count) / float(n);
 
   // Sample positions on the plane at unit distance (sampleSphereCone's angles, in float).
   float* sx = scratch.x.data()->v;
