@@ -25,6 +25,9 @@ bool tileRowSpan(const SetupTriangle& t, int ty, int& cx0, int& cx1) {
   const int yb = std::min(t.max_y, ty * kBinTileSize + kBinTileSize - 1);
   int64_t k[3];  // per edge, its largest value over the row band without the x term
   double lo = t.min_x >> kBinTileLevel, hi = t.max_x >> kBinTileLevel;
+  // A box within one column of tiles (most of a dense mesh's triangles): the estimate below
+  // could only confirm or drop that tile, and the exact test decides it alone.
+  const bool one_column = lo == hi;
   for (int i = 0; i < 3; ++i) {
     const int64_t A = t.A[i], B = t.B[i];
     k[i] = std::max(B * pixelCentre(ya), B * pixelCentre(yb)) + t.C[i];
@@ -32,6 +35,7 @@ bool tileRowSpan(const SetupTriangle& t, int ty, int& cx0, int& cx1) {
       if (k[i] < 0) return false;
       continue;
     }
+    if (one_column) continue;
     // A > 0: largest at the tile's last column, A (512 tx + 16 * 31 + 8) + k >= 0.
     // A < 0: largest at its first column,        A (512 tx + 8) + k >= 0.
     const double x = -double(k[i]) / double(A);  // edge = 0 at this 28.4 coordinate
