@@ -1,9 +1,10 @@
-// Per-target helper of the pixel kernels (tile_kernels_simd.cpp): RowSpans::span for a run of
-// rows at once, several rows per SIMD step in double, the same operations lane by lane, so the
-// same columns. Shadow volume quads seen nearly edge-on are slivers that cover about one pixel
-// per row of their rects: a kernel there spends most of its time finding each row's span, one
-// row at a time. Included once per Highway target (the include guard toggles with
-// HWY_TARGET_TOGGLE).
+// Per-target helper of the pixel kernels (raster/tile_kernels_simd.cpp,
+// shadows/wedge/wedge_kernel_simd.cpp, shadows/mask/mask_kernel_simd.cpp): RowSpans::span for
+// a run of rows, several rows per SIMD step in double, the same operations lane by lane, so the
+// same columns (rowSpans in tile_kernels.h). Shadow volume quads seen nearly edge-on are slivers
+// that cover about one pixel per row of their rects, and there finding one row's span after
+// another was a large part of a kernel's time. Included once per Highway target (the include
+// guard toggles with HWY_TARGET_TOGGLE).
 #if defined(PENUMBRA_ROW_SPANS_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef PENUMBRA_ROW_SPANS_SIMD_INL_H_
 #undef PENUMBRA_ROW_SPANS_SIMD_INL_H_
@@ -22,15 +23,9 @@ namespace penumbra {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// Rows per call of SpansOfRows; the arrays it fills need kSpanRows + 8 entries (a last step
-// may run past `count`).
-inline constexpr int kSpanRows = 32;
-inline constexpr int kSpanArray = kSpanRows + 8;
-
-// For rows y0 .. y0 + count - 1 of e's rect (count <= kSpanRows): x_lo[k], x_hi[k] as
-// RowSpans::span gives them for row y0 + k (image columns), or x_lo[k] > x_hi[k] where it
-// finds no pixel. Per lane: the row's edge values at the tile origin's column in int32 as the
-// kernels have them, then in double -r / dx rounded outwards, as span() does.
+// rowSpans (tile_kernels.h), count <= kRowSpanBatch, arrays of kRowSpanArray entries. Per
+// lane: the row's edge values at the tile origin's column in int32 as the kernels have them,
+// then in double -r / dx rounded outwards, as span() does.
 HWY_INLINE void SpansOfRows(const TileEdges& e, int y0, int count, int32_t* x_lo,
                             int32_t* x_hi) {
   const hn::CappedTag<double, 8> dd;
@@ -46,7 +41,8 @@ HWY_INLINE void SpansOfRows(const TileEdges& e, int y0, int count, int32_t* x_lo
     auto empty = hn::Lt(zero, zero);  // all false
     for (int i = 0; i < 3; ++i) {
       // e0 + dy ry in int32, exactly as the row loop computes it, then in double.
-      const auto r = hn::PromoteTo(dd, hn::Add(hn::Set(di, e.e0[i]), hn::Mul(hn::Set(di, e.dy[i]), ry)));
+      const auto r =
+          hn::PromoteTo(dd, hn::Add(hn::Set(di, e.e0[i]), hn::Mul(hn::Set(di, e.dy[i]), ry)));
       if (e.dx[i] == 0) {
         empty = hn::Or(empty, hn::Lt(r, zero));
         continue;
@@ -57,8 +53,8 @@ HWY_INLINE void SpansOfRows(const TileEdges& e, int y0, int count, int32_t* x_lo
       else
         hi = hn::Min(hi, hn::Ceil(at));
     }
-    // Empty where a dx = 0 edge is negative or the bounds cross; lo and hi are clamped to the
-    // rect's columns (plus one) before the conversion to int.
+    // Empty where a dx = 0 edge is negative or the bounds cross (then the marker tx0 + 1 >
+    // tx0); lo and hi are clamped into the rect's columns before the conversion to int.
     empty = hn::Or(empty, hn::Not(hn::Le(lo, hi)));
     lo = hn::IfThenElse(empty, hn::Set(dd, 1.0), hn::Min(lo, hn::Set(dd, last)));
     hi = hn::IfThenElse(empty, zero, hn::Max(hi, hn::Set(dd, first)));

@@ -112,6 +112,16 @@ class RowSpans {
   double inverse_dx_[3];
 };
 
+// RowSpans::span for rows y0 .. y0 + count - 1 of e's rect, count <= kRowSpanBatch: x_lo[k],
+// x_hi[k] (image columns) for row y0 + k, or x_lo[k] = e.tx0 + 1 > x_hi[k] = e.tx0 where span()
+// finds no pixel. The SIMD kernels find their rows' spans this way, several rows per SIMD step
+// (raster/row_spans_simd-inl.h); the arrays need kRowSpanArray entries (a last SIMD step may
+// run past `count`). The scalar twin calls span() row by row; tests hold the two equal.
+inline constexpr int kRowSpanBatch = 32;
+inline constexpr int kRowSpanArray = kRowSpanBatch + 8;
+void rowSpans(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi, bool simd);
+void rowSpansScalar(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi);
+
 // The pixel walk the scalar twins share: calls fn(x, y) for every pixel of the rect inside all
 // three edges, row by row, left to right.
 template <class Fn>

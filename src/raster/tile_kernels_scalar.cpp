@@ -63,6 +63,22 @@ void depthKernelScalar(const TileEdges& e, uint32_t primitive, const DepthTarget
   });
 }
 
+void rowSpansScalar(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi) {
+  const RowSpans spans(e);
+  for (int k = 0; k < count; ++k) {
+    const int ry = y0 + k - e.ty0;
+    const int32_t r[3] = {e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry};
+    int lo = 0, hi = -1;
+    if (spans.span(r, lo, hi)) {
+      x_lo[k] = lo;
+      x_hi[k] = hi;
+    } else {
+      x_lo[k] = e.tx0 + 1;
+      x_hi[k] = e.tx0;
+    }
+  }
+}
+
 void stencilKernelScalar(const TileEdges& e, int32_t contribution, DepthRule rule,
                          const StencilTarget& target, KernelCounts& counts,
                          StencilOwners owners) {

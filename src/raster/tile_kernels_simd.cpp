@@ -99,12 +99,12 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
                                                 hn::Set(di, e.dx[1] * lanes),
                                                 hn::Set(di, e.dx[2] * lanes)};
   const auto minus_one = hn::Set(di, -1);
-  // Each row's span, found for kSpanRows rows at a time (row_spans_simd-inl.h).
-  int32_t span_lo[kSpanArray], span_hi[kSpanArray];
+  // Each row's span, found kRowSpanBatch rows at a time (rowSpans, row_spans_simd-inl.h).
+  int32_t span_lo[kRowSpanArray], span_hi[kRowSpanArray];
   for (int y = y_lo; y <= y_hi; ++y) {
-    const int row_in_batch = (y - y_lo) % kSpanRows;
+    const int row_in_batch = (y - y_lo) % kRowSpanBatch;
     if (row_in_batch == 0)
-      SpansOfRows(e, y, std::min(kSpanRows, y_hi - y + 1), span_lo, span_hi);
+      SpansOfRows(e, y, std::min(kRowSpanBatch, y_hi - y + 1), span_lo, span_hi);
     const int x_lo = span_lo[row_in_batch], x_hi = span_hi[row_in_batch];
     if (x_lo > x_hi) continue;
     const int ry = y - e.ty0;
@@ -151,6 +151,10 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
   counts.writes += writes;
 }
 
+void RowSpansSimd(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi) {
+  SpansOfRows(e, y0, count, x_lo, x_hi);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace penumbra
 HWY_AFTER_NAMESPACE();
@@ -160,6 +164,15 @@ namespace penumbra {
 
 HWY_EXPORT(DepthKernelSimd);
 HWY_EXPORT(StencilKernelSimd);
+HWY_EXPORT(RowSpansSimd);
+
+void rowSpans(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi, bool simd) {
+  if (useSimd(simd)) {
+    HWY_DYNAMIC_DISPATCH(RowSpansSimd)(e, y0, count, x_lo, x_hi);
+  } else {
+    rowSpansScalar(e, y0, count, x_lo, x_hi);
+  }
+}
 
 void depthKernel(const TileEdges& e, uint32_t primitive, const DepthTarget& target,
                  KernelCounts& counts, bool simd) {
@@ -196,6 +209,10 @@ void stencilKernel(const TileEdges& e, int32_t contribution, DepthRule rule,
                    const StencilTarget& target, KernelCounts& counts, bool,
                    StencilOwners owners) {
   stencilKernelScalar(e, contribution, rule, target, counts, owners);
+}
+
+void rowSpans(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi, bool) {
+  rowSpansScalar(e, y0, count, x_lo, x_hi);
 }
 
 }  // namespace penumbra

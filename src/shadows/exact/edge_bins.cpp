@@ -393,14 +393,14 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
     std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, item)
     uint64_t tested = 0, culled = 0;
   };
-  // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
-  // item order within a tile: chunks in order, then a counting sort by tile).
   // The tiles' depth ranges with the padding edgeTileCandidates reads past the last tile.
   const TileDepthRange& range = depth.tileRange(level);
   std::vector<float> zmin(range.zmin.size() + kTileBoxPadding, 0.0f);
   std::vector<float> zmax(range.zmax.size() + kTileBoxPadding, 0.0f);
   std::copy_n(range.zmin.data(), range.zmin.size(), zmin.begin());
   std::copy_n(range.zmax.data(), range.zmax.size(), zmax.begin());
+  // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
+  // item order within a tile: chunks in order, then a counting sort by tile).
   auto binAll = [&](size_t count, const auto& regionOf, const std::vector<EdgeScreenTest>& tests,
                     std::vector<uint32_t>& begin, std::vector<uint32_t>& items) {
     const size_t chunk_size = std::clamp(count / 64, kMinChunk, kChunk);
