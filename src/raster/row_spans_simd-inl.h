@@ -12,6 +12,7 @@
 #define PENUMBRA_ROW_SPANS_SIMD_INL_H_
 #endif
 
+#include <algorithm>
 #include <cstdint>
 
 #include <hwy/highway.h>
@@ -25,15 +26,15 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // rowSpans (tile_kernels.h), count <= kRowSpanBatch, arrays of kRowSpanArray entries. Per
 // lane: the row's edge values at the tile origin's column in int32 as the kernels have them,
-// then in double -r / dx rounded outwards, as span() does.
-HWY_INLINE void SpansOfRows(const TileEdges& e, int y0, int count, int32_t* x_lo,
+// then in double -r / dx rounded outwards, as span() does (with its 1 / dx).
+HWY_INLINE void SpansOfRows(const RowSpans& spans, int y0, int count, int32_t* x_lo,
                             int32_t* x_hi) {
+  const TileEdges& e = spans.edges();
+  const double* inverse_dx = spans.inverseDx();
   const hn::CappedTag<double, 8> dd;
   const hn::Rebind<int32_t, decltype(dd)> di;
   const int lanes = int(hn::Lanes(dd));
   const double first = double(e.x0 - e.tx0), last = double(e.x1 - e.tx0);
-  double inverse_dx[3];
-  for (int i = 0; i < 3; ++i) inverse_dx[i] = e.dx[i] != 0 ? 1.0 / double(e.dx[i]) : 0.0;
   const auto zero = hn::Zero(dd);
   for (int k = 0; k < count; k += lanes) {
     const auto ry = hn::Add(hn::Iota(di, 0), hn::Set(di, y0 + k - e.ty0));
@@ -63,6 +64,27 @@ HWY_INLINE void SpansOfRows(const TileEdges& e, int y0, int count, int32_t* x_lo
     hn::StoreU(hn::Add(hn::DemoteTo(di, hi), origin), di, x_hi + k);
   }
 }
+
+// A kernel's row loop over [y_lo, y_hi], asking for every row in order: each row's span,
+// found kRowSpanBatch rows at a time.
+class BatchedRowSpans {
+ public:
+  BatchedRowSpans(const RowSpans& spans, int y_lo, int y_hi)
+      : spans_(spans), y_lo_(y_lo), y_hi_(y_hi) {}
+  // Row y's columns [x_lo, x_hi]; false when span() finds none.
+  bool at(int y, int& x_lo, int& x_hi) {
+    const int k = (y - y_lo_) % kRowSpanBatch;
+    if (k == 0) SpansOfRows(spans_, y, std::min(kRowSpanBatch, y_hi_ - y + 1), lo_, hi_);
+    x_lo = lo_[k];
+    x_hi = hi_[k];
+    return x_lo <= x_hi;
+  }
+
+ private:
+  const RowSpans& spans_;
+  int y_lo_, y_hi_;
+  int32_t lo_[kRowSpanArray], hi_[kRowSpanArray];
+};
 
 }  // namespace HWY_NAMESPACE
 }  // namespace penumbra

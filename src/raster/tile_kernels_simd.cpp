@@ -2,8 +2,6 @@
 // run time (HWY_DYNAMIC_DISPATCH). Same steps, same operation order, same results.
 #include "raster/tile_kernels.h"
 
-#include <algorithm>
-
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -99,14 +97,11 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
                                                 hn::Set(di, e.dx[1] * lanes),
                                                 hn::Set(di, e.dx[2] * lanes)};
   const auto minus_one = hn::Set(di, -1);
-  // Each row's span, found kRowSpanBatch rows at a time (rowSpans, row_spans_simd-inl.h).
-  int32_t span_lo[kRowSpanArray], span_hi[kRowSpanArray];
+  // Each row's span, a batch of rows at a time (row_spans_simd-inl.h).
+  BatchedRowSpans row_spans(spans, y_lo, y_hi);
   for (int y = y_lo; y <= y_hi; ++y) {
-    const int row_in_batch = (y - y_lo) % kRowSpanBatch;
-    if (row_in_batch == 0)
-      SpansOfRows(e, y, std::min(kRowSpanBatch, y_hi - y + 1), span_lo, span_hi);
-    const int x_lo = span_lo[row_in_batch], x_hi = span_hi[row_in_batch];
-    if (x_lo > x_hi) continue;
+    int x_lo, x_hi;
+    if (!row_spans.at(y, x_lo, x_hi)) continue;
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
@@ -152,7 +147,7 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
 }
 
 void RowSpansSimd(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi) {
-  SpansOfRows(e, y0, count, x_lo, x_hi);
+  SpansOfRows(RowSpans(e), y0, count, x_lo, x_hi);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -5,8 +5,6 @@
 // in float lanes; the 8-bit values are widened to 32-bit lanes for the blend and narrowed back.
 #include "shadows/mask/mask_kernel.h"
 
-#include <algorithm>
-
 #include "core/simd_dispatch.h"
 
 #ifndef PENUMBRA_SCALAR_ONLY
@@ -53,19 +51,16 @@ void MaskKernelSimd(const TileEdges& e, MaskBlend blend, DepthRule rule,
   const RowSpans spans(e);
   int y_lo, y_hi;
   if (!spans.rows(y_lo, y_hi)) return;
-  // Each row's span, found kRowSpanBatch rows at a time (rowSpans, row_spans_simd-inl.h).
-  int32_t span_lo[kRowSpanArray], span_hi[kRowSpanArray];
+  // Each row's span, a batch of rows at a time (row_spans_simd-inl.h).
+  BatchedRowSpans row_spans(spans, y_lo, y_hi);
   uint64_t covered = 0, writes = 0;
   for (int y = y_lo; y <= y_hi; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const int32_t start[3] = {e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry,
                               e.e0[2] + e.dy[2] * ry};
-    const int row_in_batch = (y - y_lo) % kRowSpanBatch;
-    if (row_in_batch == 0)
-      SpansOfRows(e, y, std::min(kRowSpanBatch, y_hi - y + 1), span_lo, span_hi);
-    const int x_lo = span_lo[row_in_batch], x_hi = span_hi[row_in_batch];
-    if (x_lo > x_hi) continue;
+    int x_lo, x_hi;
+    if (!row_spans.at(y, x_lo, x_hi)) continue;
     const size_t row_offset = size_t(y - target.y0) * size_t(target.stride);
     const float* depth_row = target.depth + row_offset;
     const int rx_lo = x_lo - e.tx0;

@@ -53,8 +53,8 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
   const RowSpans spans(e);
   int y_lo, y_hi;
   if (!spans.rows(y_lo, y_hi)) return;
-  // Each row's span, found kRowSpanBatch rows at a time (rowSpans, row_spans_simd-inl.h).
-  int32_t span_lo[kRowSpanArray], span_hi[kRowSpanArray];
+  // Each row's span, a batch of rows at a time (row_spans_simd-inl.h).
+  BatchedRowSpans row_spans(spans, y_lo, y_hi);
   WedgeKernelCounts local;  // in registers: through `counts` each update would go to memory
   for (int y = y_lo; y <= y_hi; ++y) {
     const int ry = y - e.ty0;
@@ -62,11 +62,8 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
     const auto sy = hn::Set(df, float(y) + 0.5f);
     const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
                   r2 = e.e0[2] + e.dy[2] * ry;
-    const int row_in_batch = (y - y_lo) % kRowSpanBatch;
-    if (row_in_batch == 0)
-      SpansOfRows(e, y, std::min(kRowSpanBatch, y_hi - y + 1), span_lo, span_hi);
-    const int x_lo = span_lo[row_in_batch], x_hi = span_hi[row_in_batch];
-    if (x_lo > x_hi) continue;
+    int x_lo, x_hi;
+    if (!row_spans.at(y, x_lo, x_hi)) continue;
     const float* depth_row = target.depth + target.index(target.x0, y);
     int16_t* li_row = target.li + target.index(target.x0, y);
     // The row's edge values, stepped by dx * lanes from one vector to the next.
