@@ -152,5 +152,32 @@ TEST(RasterDepth, TileRangesBoundTheirPixels) {
   EXPECT_THROW(buffer.tileRange(9), Error);
 }
 
+// The eye pass takes its tile ranges from each bin tile as it draws it: they must be exactly
+// the ranges built from the finished buffer, or culling decisions (and counters) would change
+// with the pass that built them. Sizes cut tiles at the image's edge at every level (odd, one
+// pixel wide, one tile and a bit), and a soup that leaves background tiles.
+TEST(RasterDepth, TileRangesTakenWhileDrawingEqualThoseBuiltAfter) {
+  const int sizes[][2] = {{203, 117}, {1, 45}, {33, 1}, {64, 64}, {257, 300}};
+  for (const auto& size : sizes) {
+    const int width = size[0], height = size[1];
+    const ClipTriangles tris = randomSoup(300, width, height, 17);
+    DepthBuffer drawn, after;
+    Image<uint32_t> drawn_ids(width, height, 0), after_ids(width, height, 0);
+    drawn.depth.resize(width, height, 0.0f);
+    after.depth.resize(width, height, 0.0f);
+    Stats stats;
+    rasterizeDepth(tris, drawn, drawn_ids, stats, true);
+    rasterizeDepth(tris, after.depth, after_ids, stats, true);
+    after.buildTileRanges();
+    ASSERT_TRUE(drawn.depth == after.depth);
+    for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
+      EXPECT_TRUE(drawn.tileRange(level).zmin == after.tileRange(level).zmin)
+          << width << "x" << height << " level " << level;
+      EXPECT_TRUE(drawn.tileRange(level).zmax == after.tileRange(level).zmax)
+          << width << "x" << height << " level " << level;
+    }
+  }
+}
+
 }  // namespace test_raster_depth
 }  // namespace penumbra

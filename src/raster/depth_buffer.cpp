@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "raster/fixed_point.h"
 
 namespace penumbra {
 namespace {
@@ -66,15 +67,8 @@ void reduceRows(const Image<float>& below_min, const Image<float>& below_max, Ti
 // while the rows are in its cache; the few rows of the levels above follow serially.
 void DepthBuffer::buildTileRanges() {
   constexpr int kBandLevel = 6;
-  const int w = depth.width(), h = depth.height();
-  for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
-    TileDepthRange& r = tiles[level];
-    r.level = level;
-    const int size = 1 << level;
-    const int tw = (w + size - 1) / size, th = (h + size - 1) / size;
-    r.zmin.resize(tw, th);
-    r.zmax.resize(tw, th);
-  }
+  const int h = depth.height();
+  allocateTileRanges();
   const int bands = (h + (1 << kBandLevel) - 1) >> kBandLevel;
   parallelFor(size_t(bands), [&](size_t band) {
     for (int level = kMinTileLevel; level <= kBandLevel; ++level) {
@@ -89,6 +83,58 @@ void DepthBuffer::buildTileRanges() {
     }
   });
   for (int level = kBandLevel + 1; level <= kMaxTileLevel; ++level) {
+    reduceRows(tiles[level - 1].zmin, tiles[level - 1].zmax, tiles[level], 0,
+               tiles[level].zmin.height());
+  }
+}
+
+void DepthBuffer::allocateTileRanges() {
+  const int w = depth.width(), h = depth.height();
+  for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
+    TileDepthRange& r = tiles[level];
+    r.level = level;
+    const int size = 1 << level;
+    const int tw = (w + size - 1) / size, th = (h + size - 1) / size;
+    r.zmin.resizeForOverwrite(tw, th);
+    r.zmax.resizeForOverwrite(tw, th);
+  }
+}
+
+void DepthBuffer::setBinTileRanges(const float* pixels, int stride, int x0, int y0, int x1,
+                                   int y1) {
+  static_assert(kBinTileLevel == 5, "setBinTileRanges fills levels 1..5 of a 32x32 tile");
+  PENUMBRA_DCHECK(x0 % kBinTileSize == 0 && y0 % kBinTileSize == 0);
+  // Level 1 from the pixels, each further level from the one below, over the tiles holding a
+  // pixel of the box (a tile cut by the image's edge takes only its pixels inside, as
+  // buildTileRanges' odd last columns and rows). Each level's rows are written straight into
+  // the level's images: the bin tile's tiles there are its own.
+  int cols = x1 - x0 + 1, rows = y1 - y0 + 1;  // of the level below
+  for (int level = kMinTileLevel; level <= kBinTileLevel; ++level) {
+    TileDepthRange& r = tiles[level];
+    const int out_cols = (cols + 1) / 2, out_rows = (rows + 1) / 2;
+    const int tx0 = x0 >> level, ty0 = y0 >> level;
+    for (int ty = 0; ty < out_rows; ++ty) {
+      const int ya = 2 * ty, yb = std::min(2 * ty + 1, rows - 1);
+      float* out_min = &r.zmin.at(tx0, ty0 + ty);
+      float* out_max = &r.zmax.at(tx0, ty0 + ty);
+      if (level == kMinTileLevel) {
+        reducePixelPairs(pixels + ya * stride, pixels + yb * stride, cols, out_min, out_max);
+      } else {
+        const TileDepthRange& below = tiles[level - 1];
+        const int bx0 = x0 >> (level - 1), by0 = y0 >> (level - 1);
+        reducePairs<true>(&below.zmin.at(bx0, by0 + ya), &below.zmin.at(bx0, by0 + yb), cols,
+                          out_min);
+        reducePairs<false>(&below.zmax.at(bx0, by0 + ya), &below.zmax.at(bx0, by0 + yb), cols,
+                           out_max);
+      }
+    }
+    cols = out_cols;
+    rows = out_rows;
+  }
+}
+
+void DepthBuffer::finishTileRanges() {
+  for (int level = kBinTileLevel + 1; level <= kMaxTileLevel; ++level) {
     reduceRows(tiles[level - 1].zmin, tiles[level - 1].zmax, tiles[level], 0,
                tiles[level].zmin.height());
   }

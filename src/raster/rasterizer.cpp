@@ -75,8 +75,12 @@ DepthRuleTiles depthRuleTiles(const SetupTriangle& t, const TileEdges& e, bool z
                                                         : DepthRuleTiles::Some;
 }
 
-void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
-                    Image<uint32_t>& primitive, Stats& stats, bool simd) {
+namespace {
+
+// rasterizeDepth, and with `ranges` (whose depth image is `depth`) its tile ranges from each
+// bin tile's copy before it is stored.
+void drawDepth(const ClipTriangles& triangles, Image<float>& depth, Image<uint32_t>& primitive,
+               Stats& stats, bool simd, DepthBuffer* ranges) {
   const int width = depth.width(), height = depth.height();
   PENUMBRA_CHECK(primitive.width() == width && primitive.height() == height,
                  "primitive ids {}x{} do not match depth {}x{}", primitive.width(),
@@ -106,11 +110,28 @@ void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
       }
       depthKernel(e, uint32_t(t.payload), target, c.kernel, simd);
     }
+    if (ranges != nullptr)
+      ranges->setBinTileRanges(tile_depth.data(), kBinTileSize, box.x0, box.y0, box.x1, box.y1);
     tile_depth.storeTo(depth, box);
     tile_primitive.storeTo(primitive, box);
   });
+  if (ranges != nullptr) ranges->finishTileRanges();
   sumInto(counts, stats, false);
   stats.triangles += setup.size();
+}
+
+}  // namespace
+
+void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
+                    Image<uint32_t>& primitive, Stats& stats, bool simd) {
+  drawDepth(triangles, depth, primitive, stats, simd, nullptr);
+}
+
+void rasterizeDepth(const ClipTriangles& triangles, DepthBuffer& depth,
+                    Image<uint32_t>& primitive, Stats& stats, bool simd) {
+  // Sized first: drawDepth checks the sizes, and the tiles' ranges are written in place.
+  depth.allocateTileRanges();
+  drawDepth(triangles, depth.depth, primitive, stats, simd, &depth);
 }
 
 void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,

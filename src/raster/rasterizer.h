@@ -19,6 +19,10 @@ namespace penumbra {
 // z_reads and stencil_writes (here: depth writes) and triangles.
 void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
                     Image<uint32_t>& primitive, Stats& stats, bool simd);
+// The same into depth.depth, and depth's tile ranges as DepthBuffer::buildTileRanges builds
+// them, taken from each bin tile while it is in cache (no second pass over the buffer).
+void rasterizeDepth(const ClipTriangles& triangles, DepthBuffer& depth,
+                    Image<uint32_t>& primitive, Stats& stats, bool simd);
 
 struct StencilOptions {
   bool simd = true;

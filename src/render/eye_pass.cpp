@@ -49,8 +49,7 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
   // rasterizeDepth writes every pixel, background included.
   eye.depth.depth.resizeForOverwrite(view.width, view.height);
   eye.primitive.resizeForOverwrite(view.width, view.height);
-  rasterizeDepth(tris, eye.depth.depth, eye.primitive, stats, simd);
-  eye.depth.buildTileRanges();
+  rasterizeDepth(tris, eye.depth, eye.primitive, stats, simd);  // tile ranges included
   eye.clip_vertices = std::move(tris.clip);
   return eye;
 }

@@ -31,6 +31,16 @@ struct DepthBuffer {
   int height() const { return depth.height(); }
   // Rebuilds tiles[kMinTileLevel..kMaxTileLevel] from `depth`.
   void buildTileRanges();
+  // The same ranges built by a pass that writes `depth` in 32x32 bin tiles
+  // (raster/rasterizer.cpp), each tile's levels 1..5 taken from its pixels while they are still
+  // in cache instead of reading the whole buffer again: allocateTileRanges sizes the levels,
+  // setBinTileRanges fills levels 1..5 over one bin tile's pixels [x0, x1] x [y0, y1] (x0, y0
+  // multiples of 32) from `pixels` (row-major, `stride` per row, pixel (x0, y0) first; threads
+  // may fill different bin tiles at once), finishTileRanges builds levels 6..8 from level 5.
+  // Min and max are exact, so the result equals buildTileRanges' bit for bit.
+  void allocateTileRanges();
+  void setBinTileRanges(const float* pixels, int stride, int x0, int y0, int x1, int y1);
+  void finishTileRanges();
   const TileDepthRange& tileRange(int level) const;
 };
 
