@@ -266,7 +266,11 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
   PENUMBRA_DCHECK(tris.indices.size() == tris.payload.size() * 3);
   PENUMBRA_DCHECK(tris.owners.empty() || tris.owners.size() == tris.payload.size() * 2);
   const ClipPlanes planes = makePlanes(width, height);
-  constexpr size_t kChunk = 4096;
+  // Chunks of at most 4096 triangles (or vertices), and at least four per worker down to 256,
+  // so that a scene of a few thousand triangles and a volume of a few hundred quads still keep
+  // every worker busy. The parts are joined in chunk order: the result does not depend on it.
+  const size_t per_worker = 4 * size_t(std::max(1, workerCount()));
+  auto chunkFor = [&](size_t items) { return std::clamp<size_t>(items / per_worker, 256, 4096); };
 
   // Classify each vertex once when vertices are shared (a mesh's vertex belongs to ~6
   // triangles); when most vertices are unused (shadow volumes: only silhouette vertices and
@@ -276,13 +280,15 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
   std::unique_ptr<ClassifiedVertex[]> classified;
   if (per_vertex) {
     classified.reset(new ClassifiedVertex[vertex_count]);
-    parallelFor((vertex_count + kChunk - 1) / kChunk, [&](size_t c) {
-      const size_t begin = c * kChunk, end = std::min(vertex_count, begin + kChunk);
+    const size_t vertex_chunk = chunkFor(vertex_count);
+    parallelFor((vertex_count + vertex_chunk - 1) / vertex_chunk, [&](size_t c) {
+      const size_t begin = c * vertex_chunk, end = std::min(vertex_count, begin + vertex_chunk);
       for (size_t i = begin; i < end; ++i)
         classified[i] = classify(tris.vertex(uint32_t(i)), planes, width, height);
     });
   }
 
+  const size_t kChunk = chunkFor(tris.size());
   const size_t chunks = (tris.size() + kChunk - 1) / kChunk;
   std::vector<std::vector<SetupTriangle>> parts(chunks);
   std::vector<std::vector<uint32_t>> part_sources(sources != nullptr ? chunks : 0);
