@@ -10,6 +10,7 @@
 #include "raster/tile_copy.h"
 #include "raster/tile_kernels.h"
 #include "shadows/hierarchical/tile_box_test.h"
+#include "shadows/stencil_resolve.h"
 
 namespace penumbra {
 namespace {
@@ -507,17 +508,11 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
       drawn = drawBinTile(set, depth, options, bins, index, box, tile_depth.data(), tile_stencil,
                           work[index]);
     }
-    // resolveVisibility's rule (facing_away.h), pixel by pixel: lit where the stencil is 0.
-    for (int y = box.y0; y <= box.y1; ++y) {
-      const uint32_t* ids = eye.primitive.row(y);
-      float* out = visibility.row(y);
-      const int32_t* s = tile_stencil + size_t(y - box.y0) * kBinTileSize;
-      for (int x = box.x0; x <= box.x1; ++x) {
-        out[x] = resolvedPixel(away, ids[x], [&] {
-          return drawn && s[x - box.x0] != 0 ? 0.0f : 1.0f;
-        });
-      }
-    }
+    // resolveVisibility's rule (facing_away.h): lit where the stencil is 0.
+    for (int y = box.y0; y <= box.y1; ++y)
+      resolveStencilRow(away, &eye.primitive.at(box.x0, y),
+                        drawn ? tile_stencil + size_t(y - box.y0) * kBinTileSize : nullptr,
+                        &visibility.at(box.x0, y), box.x1 - box.x0 + 1, options.simd);
   });
   addCounters(work, stats);
 }

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 
+#include "core/parallel.h"
 #include "core/timer.h"
 #include "raster/rasterizer.h"
 #include "shadows/caster_volume.h"
 #include "shadows/facing_away.h"
+#include "shadows/stencil_resolve.h"
 
 namespace penumbra {
 namespace {
@@ -137,8 +139,16 @@ TechniqueResult hardShadowVolumes(const Scene& scene, const Light& light, const 
   const Image<int32_t> stencil =
       shadowStencil(scene, light.center, view, eye, options, result.stats);
   PassTimer timer(result.stats, "resolve");
-  resolveVisibility(scene, light, view, eye, result.visibility,
-                    [&](int x, int y) { return stencil.at(x, y) != 0 ? 0.0f : 1.0f; });
+  // resolveVisibility's rule with "lit where the stencil is 0", a row at a time.
+  const FacingAway away(scene, light, view);
+  result.visibility.resizeForOverwrite(view.width, view.height);
+  constexpr int kRowsPerTask = 16;  // as shading's bands
+  parallelFor(size_t((view.height + kRowsPerTask - 1) / kRowsPerTask), [&](size_t band) {
+    const int y_end = std::min(view.height, int(band + 1) * kRowsPerTask);
+    for (int y = int(band) * kRowsPerTask; y < y_end; ++y)
+      resolveStencilRow(away, eye.primitive.row(y), stencil.row(y), result.visibility.row(y),
+                        view.width, options.simd);
+  });
   return result;
 }
 

@@ -1,0 +1,67 @@
+// The row resolve of a hard stencil (src/shadows/stencil_resolve.h): its SIMD version, its
+// scalar twin and resolvedPixel's rule (facing_away.h) give the same visibility on every pixel.
+#include <gtest/gtest.h>
+
+#include "core/simd_dispatch.h"
+#include "raster_test_util.h"
+#include "render/eye_pass.h"
+#include "scene/builtin_scenes.h"
+#include "shadows/stencil_resolve.h"
+
+namespace penumbra {
+namespace test_stencil_resolve {
+
+// `columns` at a width that is no multiple of a vector: rows hold the background, triangles
+// facing away from the light, runs of one triangle and single pixels of many (the columns'
+// thin facets), and a stencil of runs and isolated values. A difference means a vector showing
+// one triangle was decided by another pixel's facing, a lane past the row's end was written, or
+// the twins read the stencil differently (a null stencil is all 0).
+TEST(StencilResolve, SimdScalarAndTheRuleAgreeOnEveryPixel) {
+  const Scene scene = builtinScene("columns");
+  const View view = scene.camera.makeView(203, 117);
+  Stats stats;
+  const EyeBuffers eye = renderEyePass(scene, view, stats);
+  const Light& light = scene.lights.at(0);
+  const FacingAway away(scene, light, view);
+  testing::TestRandom rng(5);
+  std::vector<int32_t> stencil(size_t(view.width));
+  size_t background = 0, facing_away = 0, shadowed = 0, lit = 0;
+  for (int y = 0; y < view.height; ++y) {
+    const uint32_t* ids = eye.primitive.row(y);
+    for (int x = 0; x < view.width;) {  // runs of 1 to 40 equal values
+      const int32_t value = rng.uniform() < 0.5 ? 0 : int32_t(rng.uniform(-3, 3));
+      for (int run = 1 + int(rng.uniform(0, 40)); run > 0 && x < view.width; --run)
+        stencil[size_t(x++)] = value;
+    }
+    for (const int32_t* s : {static_cast<const int32_t*>(stencil.data()), static_cast<const int32_t*>(nullptr)}) {
+      // One pixel more than the row: a lane written past the end would change it.
+      std::vector<float> simd(size_t(view.width) + 1, -1.0f), scalar(simd);
+      resolveStencilRow(away, ids, s, simd.data(), view.width, true);
+      resolveStencilRowScalar(away, ids, s, scalar.data(), view.width);
+      ASSERT_EQ(simd, scalar) << "row " << y;
+      for (int x = 0; x < view.width; ++x) {
+        const float rule = resolvedPixel(away, ids[x], [&] {
+          return s != nullptr && s[x] != 0 ? 0.0f : 1.0f;
+        });
+        ASSERT_EQ(scalar[size_t(x)], rule) << "pixel " << x << ", " << y;
+        if (s == nullptr) continue;
+        if (ids[x] == kNoPrimitive) {
+          ++background;
+        } else if (away(ids[x])) {
+          ++facing_away;
+        } else {
+          ++(s[x] != 0 ? shadowed : lit);
+        }
+      }
+    }
+  }
+  // Every case of the rule was met.
+  EXPECT_GT(background, 0u);
+  EXPECT_GT(facing_away, 0u);
+  EXPECT_GT(shadowed, 0u);
+  EXPECT_GT(lit, 0u);
+  if (!simdKernelsAvailable()) GTEST_SKIP() << "scalar-only build: the SIMD row is the scalar one";
+}
+
+}  // namespace test_stencil_resolve
+}  // namespace penumbra
