@@ -136,6 +136,15 @@ void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triang
   StepTriangles tris;
   for (size_t x = 0; x < size_t(frame.width); x += lanes) {
     const size_t count = std::min(lanes, size_t(frame.width) - x);
+    {
+      constexpr size_t kAhead = 128;  // pixels
+      if (x + kAhead < size_t(frame.width)) {
+        __builtin_prefetch(id_row + x + kAhead);
+        __builtin_prefetch(depth_row + x + kAhead);
+        for (const ShadingLight& light : frame.lights)
+          if (light.visibility) __builtin_prefetch(light.visibility + row_pixel + x + kAhead);
+      }
+    }
     const auto in_row_u = hn::FirstN(du, count);
     const auto ids = hn::MaskedLoad(in_row_u, du, id_row + x);
     const VF depth = hn::MaskedLoad(hn::RebindMask(df, in_row_u), df, depth_row + x);
