@@ -37,7 +37,7 @@ TEST(StencilResolve, SimdScalarAndTheRuleAgreeOnEveryPixel) {
       // One pixel more than the row: a lane written past the end would change it.
       std::vector<float> simd(size_t(view.width) + 1, -1.0f), scalar(simd);
       resolveStencilRow(away, ids, s, simd.data(), view.width, true);
-      resolveStencilRowScalar(away, ids, s, scalar.data(), view.width);
+      resolveStencilRowsScalar(away, {ids, 0, s, 0, scalar.data(), 0, view.width, 1});
       ASSERT_EQ(simd, scalar) << "row " << y;
       for (int x = 0; x < view.width; ++x) {
         const float rule = resolvedPixel(away, ids[x], [&] {

@@ -11,11 +11,25 @@
 
 namespace penumbra {
 
-// out[0, n) from ids[0, n) (the eye pass's primitive ids) and stencil[0, n); a null stencil is
-// all 0 (nothing drawn there).
-void resolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
-                       float* out, int n, bool simd);
-void resolveStencilRowScalar(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
-                             float* out, int n);
+// A block of `rows` rows of n pixels: out from ids (the eye pass's primitive ids) and stencil,
+// each with its own stride in elements between rows (a bin tile's 32 rows inside the frame's
+// images, its stencil a tile-sized copy); a null stencil is all 0 (nothing drawn there).
+struct StencilResolveRows {
+  const uint32_t* ids = nullptr;
+  size_t ids_stride = 0;
+  const int32_t* stencil = nullptr;
+  size_t stencil_stride = 0;
+  float* out = nullptr;
+  size_t out_stride = 0;
+  int n = 0, rows = 0;
+};
+void resolveStencilRows(const FacingAway& away, const StencilResolveRows& block, bool simd);
+void resolveStencilRowsScalar(const FacingAway& away, const StencilResolveRows& block);
+
+// One row: out[0, n) from ids[0, n) and stencil[0, n).
+inline void resolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
+                              float* out, int n, bool simd) {
+  resolveStencilRows(away, {ids, 0, stencil, 0, out, 0, n, 1}, simd);
+}
 
 }  // namespace penumbra

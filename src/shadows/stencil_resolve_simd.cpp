@@ -1,4 +1,4 @@
-// SIMD twin of stencil_resolve.cpp's row, compiled once per CPU target by Highway and chosen at
+// SIMD twin of stencil_resolve.cpp's rows, compiled once per CPU target by Highway and chosen at
 // run time (HWY_DYNAMIC_DISPATCH). Same rule, same results.
 #include <algorithm>
 
@@ -17,8 +17,8 @@ namespace penumbra {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-void ResolveStencilRowSimd(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
-                           float* out, int n) {
+void ResolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
+                       float* out, int n) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const hn::RebindToUnsigned<decltype(df)> du;
@@ -59,8 +59,23 @@ void ResolveStencilRowSimd(const FacingAway& away, const uint32_t* ids, const in
       }
       result = hn::Load(df, lanes_out);
     }
-    hn::BlendedStore(result, hn::RebindMask(df, in_row), df, out + x);
+    // A masked store costs far more than a plain one on some CPUs (AMD Zen 4): only the
+    // row's last, partial vector takes it.
+    if (count == lanes) {
+      hn::StoreU(result, df, out + x);
+    } else {
+      hn::BlendedStore(result, hn::RebindMask(df, in_row), df, out + x);
+    }
   }
+}
+
+void ResolveStencilRowsSimd(const FacingAway& away, const StencilResolveRows& block) {
+  for (int y = 0; y < block.rows; ++y)
+    ResolveStencilRow(away, block.ids + size_t(y) * block.ids_stride,
+                      block.stencil != nullptr
+                          ? block.stencil + size_t(y) * block.stencil_stride
+                          : nullptr,
+                      block.out + size_t(y) * block.out_stride, block.n);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -70,14 +85,13 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace penumbra {
 
-HWY_EXPORT(ResolveStencilRowSimd);
+HWY_EXPORT(ResolveStencilRowsSimd);
 
-void resolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
-                       float* out, int n, bool simd) {
+void resolveStencilRows(const FacingAway& away, const StencilResolveRows& block, bool simd) {
   if (useSimd(simd)) {
-    HWY_DYNAMIC_DISPATCH(ResolveStencilRowSimd)(away, ids, stencil, out, n);
+    HWY_DYNAMIC_DISPATCH(ResolveStencilRowsSimd)(away, block);
   } else {
-    resolveStencilRowScalar(away, ids, stencil, out, n);
+    resolveStencilRowsScalar(away, block);
   }
 }
 
@@ -88,9 +102,8 @@ void resolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_
 
 namespace penumbra {
 
-void resolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
-                       float* out, int n, bool) {
-  resolveStencilRowScalar(away, ids, stencil, out, n);
+void resolveStencilRows(const FacingAway& away, const StencilResolveRows& block, bool) {
+  resolveStencilRowsScalar(away, block);
 }
 
 }  // namespace penumbra

@@ -535,10 +535,12 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
                           work[index]);
     }
     // resolveVisibility's rule (facing_away.h): lit where the stencil is 0.
-    for (int y = box.y0; y <= box.y1; ++y)
-      resolveStencilRow(away, &eye.primitive.at(box.x0, y),
-                        drawn ? tile_stencil + size_t(y - box.y0) * kBinTileSize : nullptr,
-                        &visibility.at(box.x0, y), box.x1 - box.x0 + 1, options.simd);
+    resolveStencilRows(away,
+                       {&eye.primitive.at(box.x0, box.y0), size_t(width),
+                        drawn ? tile_stencil : nullptr, size_t(kBinTileSize),
+                        &visibility.at(box.x0, box.y0), size_t(width), box.x1 - box.x0 + 1,
+                        box.y1 - box.y0 + 1},
+                       options.simd);
   });
   addCounters(work, stats);
 }
