@@ -33,7 +33,8 @@ TEST(StencilResolve, SimdScalarAndTheRuleAgreeOnEveryPixel) {
       for (int run = 1 + int(rng.uniform(0, 40)); run > 0 && x < view.width; --run)
         stencil[size_t(x++)] = value;
     }
-    for (const int32_t* s : {static_cast<const int32_t*>(stencil.data()), static_cast<const int32_t*>(nullptr)}) {
+    const int32_t* const stencils[] = {stencil.data(), nullptr};
+    for (const int32_t* s : stencils) {
       // One pixel more than the row: a lane written past the end would change it.
       std::vector<float> simd(size_t(view.width) + 1, -1.0f), scalar(simd);
       resolveStencilRow(away, ids, s, simd.data(), view.width, true);

@@ -18,4 +18,14 @@ struct TileBins {
 
 TileBins binTriangles(const std::vector<SetupTriangle>& triangles, int width, int height);
 
+// A bin's triangles are read in index order but lie anywhere in the set-up array, and a dense
+// mesh's records do not stay in cache from one tile to the next: a pass over a bin asks for the
+// record kBinLookahead triangles ahead, both of its cache lines.
+inline constexpr uint32_t kBinLookahead = 4;
+inline void prefetchSetupTriangle(const SetupTriangle& t) {
+  const char* p = reinterpret_cast<const char*>(&t);
+  __builtin_prefetch(p);
+  __builtin_prefetch(p + sizeof(SetupTriangle) - 1);
+}
+
 }  // namespace penumbra

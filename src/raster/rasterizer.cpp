@@ -100,7 +100,10 @@ void drawDepth(const ClipTriangles& triangles, Image<float>& depth, Image<uint32
     DepthTarget target{tile_depth.data(), tile_primitive.data(), kBinTileSize};
     target.x0 = box.x0;
     target.y0 = box.y0;
-    for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
+    const uint32_t end = bins.offsets[tile + 1];
+    for (uint32_t k = bins.offsets[tile]; k < end; ++k) {
+      if (k + kBinLookahead < end)
+        prefetchSetupTriangle(setup[bins.triangles[k + kBinLookahead]]);
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
       ++c.tally.tested;
@@ -176,7 +179,10 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
     TileOffsets coarse(options.cull_level);
     constexpr int kDraw = 1, kWhole = 2;
     const bool two_level = options.tile_culling && options.two_level;
-    for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k) {
+    const uint32_t end = bins.offsets[tile + 1];
+    for (uint32_t k = bins.offsets[tile]; k < end; ++k) {
+      if (k + kBinLookahead < end)
+        prefetchSetupTriangle(setup[bins.triangles[k + kBinLookahead]]);
       const SetupTriangle& t = setup[bins.triangles[k]];
       TileEdges e;
       if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;

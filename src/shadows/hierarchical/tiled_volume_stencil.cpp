@@ -165,6 +165,8 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   if ((near_test && tile.zmin() > hi) || (zfail && tile.zmax() < lo)) return;
   const TileBox& box = tile.box();
   for (const uint32_t* k = first; k != last; ++k) {
+    if (last - k > ptrdiff_t(kBinLookahead))
+      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
@@ -226,6 +228,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // every tile of the rect (which is then classified without a test of its own: the sample
   // decides). A rect of one tile skips it (its tile's own test follows at once).
   for (const uint32_t* k = first; k != last && !per_pixel_only; ++k) {
+    if (last - k > ptrdiff_t(kBinLookahead))
+      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
     // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
@@ -365,6 +369,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   int unmarked = tile.surfaceCells();  // once 0, no rect can mark another
   const uint32_t* pending = first;  // triangles before it are drawn
   for (const uint32_t* k = first; k != last; ++k) {
+    if (last - k > ptrdiff_t(kBinLookahead))
+      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
