@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/parallel.h"
 #include "raster/binning.h"
 #include "raster/cull_tiles.h"
 #include "raster/rasterizer.h"
@@ -159,6 +160,38 @@ TEST(RasterCullTiles, BinnerHandsOutExactlyTheTilesTheEdgesMeet) {
     }
   }
   EXPECT_GT(pairs, 2000u);
+}
+
+// Binning counts and fills its lists in runs of triangles at once: each tile's list must still
+// hold exactly its triangles in increasing order (the passes resolve depth ties by that order)
+// for any thread count. Enough triangles for several runs; the reference walks every
+// (triangle, tile) pair in order.
+TEST(RasterCullTiles, BinsListEachTilesTrianglesInOrderAcrossRuns) {
+  constexpr int kWidth = 333, kHeight = 210;
+  const std::vector<SetupTriangle> setup =
+      setupTriangles(slantedTriangles(30000, kWidth, kHeight, 5), kWidth, kHeight);
+  ASSERT_GT(setup.size(), 3u * 4096u);  // several runs
+  TileBins expected;
+  expected.tiles_x = (kWidth + kBinTileSize - 1) / kBinTileSize;
+  expected.tiles_y = (kHeight + kBinTileSize - 1) / kBinTileSize;
+  expected.offsets.push_back(0);
+  for (size_t tile = 0; tile < expected.tileCount(); ++tile) {
+    const int tx = int(tile % size_t(expected.tiles_x)), ty = int(tile / size_t(expected.tiles_x));
+    const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
+    const int x1 = std::min(kWidth, x0 + kBinTileSize) - 1;
+    const int y1 = std::min(kHeight, y0 + kBinTileSize) - 1;
+    for (size_t i = 0; i < setup.size(); ++i) {
+      TileEdges e;
+      if (setupTileEdges(setup[i], x0, y0, x1, y1, e)) expected.triangles.push_back(uint32_t(i));
+    }
+    expected.offsets.push_back(uint32_t(expected.triangles.size()));
+  }
+  for (int threads : {1, 2, 0}) {
+    const ThreadLimit limit(threads);
+    const TileBins bins = binTriangles(setup, kWidth, kHeight);
+    EXPECT_EQ(bins.offsets, expected.offsets) << threads << " threads";
+    EXPECT_EQ(bins.triangles, expected.triangles) << threads << " threads";
+  }
 }
 
 // Large shadow-volume-like triangles with random depth planes, half counted z-pass and half

@@ -66,9 +66,9 @@ bool tileRowSpan(const SetupTriangle& t, int ty, int& cx0, int& cx1) {
 }  // namespace
 
 // Each triangle's tile-row spans are solved once, in parallel (they are most of the work),
-// then two sequential passes (count, then fill) over them: linear in the number of (triangle,
-// tile) pairs, and each tile's list stays in triangle order, which makes depth ties resolve the
-// same way for any thread count.
+// then two passes (count, then fill) over them, each in parallel over runs of triangles: linear
+// in the number of (triangle, tile) pairs, and each tile's list stays in triangle order, which
+// makes depth ties resolve the same way for any thread count.
 TileBins binTriangles(const std::vector<SetupTriangle>& triangles, int width, int height) {
   TileBins bins;
   bins.tiles_x = (width + kBinTileSize - 1) / kBinTileSize;
@@ -98,12 +98,37 @@ TileBins binTriangles(const std::vector<SetupTriangle>& triangles, int width, in
     for (uint32_t k = span_begin[i]; k < span_begin[i + 1]; ++k, ++ty)
       for (int tx = spans[k].first; tx <= spans[k].last; ++tx) fn(size_t(ty) * bins.tiles_x + tx);
   };
-  for (size_t i = 0; i < n; ++i) forEachTileOf(i, [&](size_t tile) { ++bins.offsets[tile + 1]; });
-  for (size_t i = 1; i < bins.offsets.size(); ++i) bins.offsets[i] += bins.offsets[i - 1];
+  // Count, then fill, in parallel over runs of triangles: run r's pairs with a tile go after
+  // those of the runs before it, so each tile's list is in triangle order whatever the runs.
+  // Runs of at least 4096 triangles, at most 64, and at most 4M (run, tile) counters.
+  const size_t tiles = bins.tileCount();
+  const size_t runs = std::min(std::clamp<size_t>(n / 4096, 1, 64),
+                               std::max<size_t>(1, (size_t(1) << 22) / tiles));
+  const size_t per_run = (n + runs - 1) / runs;
+  // Run r's count of tile t's pairs at [r * tiles + t], then the count of the runs before it.
+  std::vector<uint32_t> counts(runs * tiles, 0);
+  parallelFor(runs, [&](size_t r) {
+    uint32_t* count = &counts[r * tiles];
+    for (size_t i = r * per_run; i < std::min(n, (r + 1) * per_run); ++i)
+      forEachTileOf(i, [&](size_t tile) { ++count[tile]; });
+  });
+  for (size_t t = 0; t < tiles; ++t) {
+    uint32_t sum = 0;  // the pairs of tile t in the runs before r
+    for (size_t r = 0; r < runs; ++r) {
+      const uint32_t count = counts[r * tiles + t];
+      counts[r * tiles + t] = sum;
+      sum += count;
+    }
+    bins.offsets[t + 1] = bins.offsets[t] + sum;
+  }
   bins.triangles.resize(bins.offsets.back());
-  std::vector<uint32_t> cursor(bins.offsets.begin(), bins.offsets.end() - 1);
-  for (size_t i = 0; i < n; ++i)
-    forEachTileOf(i, [&](size_t tile) { bins.triangles[cursor[tile]++] = uint32_t(i); });
+  parallelFor(runs, [&](size_t r) {
+    uint32_t* cursor = &counts[r * tiles];
+    for (size_t i = r * per_run; i < std::min(n, (r + 1) * per_run); ++i)
+      forEachTileOf(i, [&](size_t tile) {
+        bins.triangles[bins.offsets[tile] + cursor[tile]++] = uint32_t(i);
+      });
+  });
   return bins;
 }
 
