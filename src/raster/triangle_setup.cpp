@@ -288,12 +288,12 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
     });
   }
 
-  const size_t kChunk = chunkFor(tris.size());
-  const size_t chunks = (tris.size() + kChunk - 1) / kChunk;
+  const size_t triangle_chunk = chunkFor(tris.size());
+  const size_t chunks = (tris.size() + triangle_chunk - 1) / triangle_chunk;
   std::vector<std::vector<SetupTriangle>> parts(chunks);
   std::vector<std::vector<uint32_t>> part_sources(sources != nullptr ? chunks : 0);
   parallelFor(chunks, [&](size_t c) {
-    const size_t begin = c * kChunk, end = std::min(tris.size(), begin + kChunk);
+    const size_t begin = c * triangle_chunk, end = std::min(tris.size(), begin + triangle_chunk);
     parts[c].reserve(end - begin);
     if (per_vertex) {
       const ClassifiedVertex* table = classified.get();

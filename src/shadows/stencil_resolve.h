@@ -5,6 +5,7 @@
 // time) and its scalar twin give identical rows. The SIMD one decides a vector of pixels showing
 // one triangle with one facing lookup (most vectors, away from silhouettes and small triangles)
 // and the others lane by lane.
+#include <cstddef>
 #include <cstdint>
 
 #include "shadows/facing_away.h"

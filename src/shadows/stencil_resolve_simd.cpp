@@ -59,8 +59,7 @@ void ResolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_
       }
       result = hn::Load(df, lanes_out);
     }
-    // A masked store costs far more than a plain one on some CPUs (AMD Zen 4): only the
-    // row's last, partial vector takes it.
+    // Whole vectors are stored plainly; only the row's last, partial vector needs the mask.
     if (count == lanes) {
       hn::StoreU(result, df, out + x);
     } else {
