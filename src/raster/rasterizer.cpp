@@ -161,12 +161,10 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
     // As rasterizeDepth: the tile's depth and stencil in contiguous copies of their own. In
     // place, a tile's rows are one image row apart, which at 1920 (or 640) pixels is a multiple
     // of 512 bytes: its 32 rows of depth and stencil fall into a sixteenth of the L1 cache sets.
-    // The tile's stencil rows are written when it is done: asked for now, they arrive while it
-    // is drawn (32 rows one image row apart, which no hardware prefetcher follows).
-    for (int y = box.y0; y <= box.y1; ++y) {
-      __builtin_prefetch(&stencil.at(box.x0, y), 1);
-      __builtin_prefetch(&stencil.at(box.x1, y), 1);
-    }
+    // The tile's stencil rows are written when it is done: asked for now (prefetchRow), they
+    // arrive while it is drawn.
+    for (int y = box.y0; y <= box.y1; ++y)
+      prefetchRow(&stencil.at(box.x0, y), box.x1 - box.x0 + 1, true);
     TileCopy<float> tile_depth(depth.depth, box);
     TileCopy<int32_t> tile_stencil(0);  // the caller cleared the stencil: nothing to read
     StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};

@@ -5,6 +5,7 @@
 // bytes: the rows of two such buffers fall into a sixteenth of the L1 cache sets, and the first
 // load of each row stalls the eye pass's depth kernel for most of its time (bench/README.md).
 #include <algorithm>
+#include <cstdint>
 
 #include "core/image.h"
 #include "raster/fixed_point.h"
@@ -15,6 +16,22 @@ namespace penumbra {
 struct TileBox {
   int x0, y0, x1, y1;
 };
+
+// Asks for the cache lines of `count` elements from `first` (a bin tile's row of a frame-sized
+// image), for reading or for writing: a tile's rows lie one image row apart, which no hardware
+// prefetcher follows, so a pass that reads or writes them after drawing the tile asks first.
+template <class T>
+void prefetchRow(const T* first, int count, bool write) {
+  // Every line from the first element's to the last one's (a row need not start on a line).
+  const uintptr_t last = reinterpret_cast<uintptr_t>(first + count) - 1;
+  for (uintptr_t line = reinterpret_cast<uintptr_t>(first) & ~uintptr_t(63); line <= last;
+       line += 64) {
+    if (write)
+      __builtin_prefetch(reinterpret_cast<const void*>(line), 1);
+    else
+      __builtin_prefetch(reinterpret_cast<const void*>(line), 0);
+  }
+}
 
 template <class T>
 class TileCopy {

@@ -86,12 +86,11 @@ class RowSpans {
     y_hi = e_.ty0 + int(last);
     return true;
   }
-  // Row whose edge values at the tile origin's column are r[]: false when no pixel of it can
-  // be inside, else the image columns [x_lo, x_hi] within [e.x0, e.x1].
-  // 1 / dx per edge (0 where dx is 0), for the batched form (row_spans_simd-inl.h).
+  // 1 / dx per edge (0 where dx is 0) and the rect, for the batched form (row_spans_simd-inl.h).
   const double* inverseDx() const { return inverse_dx_; }
   const TileEdges& edges() const { return e_; }
-
+  // Row whose edge values at the tile origin's column are r[]: false when no pixel of it can
+  // be inside, else the image columns [x_lo, x_hi] within [e.x0, e.x1].
   bool span(const int32_t (&r)[3], int& x_lo, int& x_hi) const {
     double lo = double(e_.x0 - e_.tx0), hi = double(e_.x1 - e_.tx0);
     for (int i = 0; i < 3; ++i) {

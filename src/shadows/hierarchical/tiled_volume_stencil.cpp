@@ -396,20 +396,6 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   }
 }
 
-// Asks for the cache lines of `count` elements from `first`, for reading or for writing.
-template <class T>
-void prefetchRow(const T* first, int count, bool write) {
-  const char* begin = reinterpret_cast<const char*>(first);
-  const char* end = reinterpret_cast<const char*>(first + count);
-  for (const char* p = begin; p < end; p += 64) {
-    if (write)
-      __builtin_prefetch(p, 1);
-    else
-      __builtin_prefetch(p, 0);
-  }
-  __builtin_prefetch(end - 1, write ? 1 : 0);
-}
-
 TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
   const int tx = int(tile % size_t(bins.tiles_x)), ty = int(tile / size_t(bins.tiles_x));
   const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
@@ -525,9 +511,8 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
   std::vector<TileWork> work(bins.tileCount());
   parallelFor(bins.tileCount(), [&](size_t index) {
     const TileBox box = binTileBox(bins, index, width, height);
-    // The tile's rows of ids and visibility are read and written only after its volumes are
-    // drawn: 32 rows one image row apart, which no hardware prefetcher follows. Asked for now,
-    // they arrive meanwhile.
+    // The tile's rows of ids and visibility are read and written after its volumes are drawn:
+    // asked for now (prefetchRow), they arrive meanwhile.
     for (int y = box.y0; y <= box.y1; ++y) {
       prefetchRow(&eye.primitive.at(box.x0, y), box.x1 - box.x0 + 1, false);
       prefetchRow(&visibility.at(box.x0, y), box.x1 - box.x0 + 1, true);

@@ -55,12 +55,12 @@ void MaskKernelSimd(const TileEdges& e, MaskBlend blend, DepthRule rule,
   BatchedRowSpans row_spans(spans, y_lo, y_hi);
   uint64_t covered = 0, writes = 0;
   for (int y = y_lo; y <= y_hi; ++y) {
+    int x_lo, x_hi;
+    if (!row_spans.at(y, x_lo, x_hi)) continue;
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const int32_t start[3] = {e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry,
                               e.e0[2] + e.dy[2] * ry};
-    int x_lo, x_hi;
-    if (!row_spans.at(y, x_lo, x_hi)) continue;
     const size_t row_offset = size_t(y - target.y0) * size_t(target.stride);
     const float* depth_row = target.depth + row_offset;
     const int rx_lo = x_lo - e.tx0;

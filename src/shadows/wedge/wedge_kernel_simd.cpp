@@ -57,13 +57,13 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
   BatchedRowSpans row_spans(spans, y_lo, y_hi);
   WedgeKernelCounts local;  // in registers: through `counts` each update would go to memory
   for (int y = y_lo; y <= y_hi; ++y) {
+    int x_lo, x_hi;
+    if (!row_spans.at(y, x_lo, x_hi)) continue;
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const auto sy = hn::Set(df, float(y) + 0.5f);
     const int32_t r0 = e.e0[0] + e.dy[0] * ry, r1 = e.e0[1] + e.dy[1] * ry,
                   r2 = e.e0[2] + e.dy[2] * ry;
-    int x_lo, x_hi;
-    if (!row_spans.at(y, x_lo, x_hi)) continue;
     const float* depth_row = target.depth + target.index(target.x0, y);
     int16_t* li_row = target.li + target.index(target.x0, y);
     // The row's edge values, stepped by dx * lanes from one vector to the next.
