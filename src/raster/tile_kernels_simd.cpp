@@ -43,6 +43,10 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
                                               hn::Mul(hn::Set(di, e.dx[2]), iota_i)};
   const auto id = hn::Set(du, primitive);
   const auto da = hn::Set(df, e.da);
+  // No branch on what a vector holds: a dense mesh's triangles are a few pixels wide, and
+  // whether a row of one covers a pixel, or passes the depth test, follows no pattern a branch
+  // predictor learns; masked loads and stores of an empty mask touch nothing.
+  uint64_t covered = 0, writes = 0;
   for (int y = e.y0; y <= e.y1; ++y) {
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
@@ -54,21 +58,21 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
       // Covered: inside all three edges (>= 0).
       const auto in_row = hn::FirstN(di, size_t(e.x1 - x + 1));
       const auto inside_i = hn::And(insideMask(di, e, row, rx, lane_step), in_row);
-      if (hn::AllFalse(di, inside_i)) continue;
       const auto inside = hn::RebindMask(df, inside_i);
-      counts.covered += hn::CountTrue(df, inside);
+      covered += hn::CountTrue(df, inside);
       // Depth test: strictly closer (greater reversed-Z) wins, so the first drawn of equal
       // depths stays.
       const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
       const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
       const auto write = hn::And(inside, hn::Gt(d, stored));
-      if (hn::AllFalse(df, write)) continue;
-      counts.writes += hn::CountTrue(df, write);
+      writes += hn::CountTrue(df, write);
       // Write depth and primitive id where it passes.
       hn::BlendedStore(d, write, df, depth_row + (x - target.x0));
       hn::BlendedStore(id, hn::RebindMask(du, write), du, id_row + (x - target.x0));
     }
   }
+  counts.covered += covered;
+  counts.writes += writes;
 }
 
 void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
@@ -111,6 +115,34 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
     auto edge0 = hn::Add(hn::Set(di, row.start[0] + e.dx[0] * rx_lo), lane_step[0]);
     auto edge1 = hn::Add(hn::Set(di, row.start[1] + e.dx[1] * rx_lo), lane_step[1]);
     auto edge2 = hn::Add(hn::Set(di, row.start[2] + e.dx[2] * rx_lo), lane_step[2]);
+    if (x_hi - x_lo < lanes) {
+      // A span of one vector (a sliver's row: most rows of a dense mesh's shadow volume quads),
+      // without a branch on what it holds: whether a sliver's row covers a pixel and passes the
+      // depth test follows no pattern a branch predictor learns, and masked loads and stores of
+      // an empty mask touch nothing. The same steps as the loop below.
+      const auto inside_i =
+          hn::And(hn::And(hn::FirstN(di, size_t(x_hi - x_lo + 1)), hn::Gt(edge0, minus_one)),
+                  hn::And(hn::Gt(edge1, minus_one), hn::Gt(edge2, minus_one)));
+      const auto inside = hn::RebindMask(df, inside_i);
+      covered += hn::CountTrue(df, inside);
+      const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx_lo))));
+      const auto stored = hn::MaskedLoad(inside, df, depth_row + (x_lo - target.x0));
+      const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
+      auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
+      if (owned) {
+        const auto write_u = hn::RebindMask(du, write);
+        const auto id = hn::MaskedLoad(
+            write_u, du,
+            target.primitive + size_t(y - target.y0) * target.stride + (x_lo - target.x0));
+        write = hn::RebindMask(df, hn::AndNot(hn::Or(hn::Eq(id, owner0), hn::Eq(id, owner1)),
+                                              write_u));
+      }
+      writes += hn::CountTrue(df, write);
+      const auto write_i = hn::RebindMask(di, write);
+      const auto s = hn::MaskedLoad(write_i, di, stencil_row + (x_lo - target.x0));
+      hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + (x_lo - target.x0));
+      continue;
+    }
     for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step[0]),
              edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2])) {
       const int rx = x - e.tx0;
