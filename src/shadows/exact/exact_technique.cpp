@@ -67,6 +67,8 @@ struct Scratch {
   std::vector<const CuttingTriangle*> cutting[kBlockPixels];
   OriginTriangle origin_triangle;  // the last visible triangle set up (RayOrigins::start)
   std::vector<uint32_t> neighbours;  // of the visible triangle (VertexRings)
+  PixelLanes pixel_lanes;             // one edge's candidate pixels (edgeAtPixels)
+  EdgeLanes edge_lanes;
   explicit Scratch(const SortedSamples& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
         into(size_t(s.n)), cone_samples(size_t(s.n)) {}
@@ -374,27 +376,53 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           }
           work.tests += uint64_t(__builtin_popcountll(block.active));
           uint64_t candidates = edgeCandidates(bins.tests[*it], block, context.simd);
+          if (candidates == 0) continue;
+          const PotentialEdge& edge = edges.edges[*it];
+          // The candidates' count at the centre moved to their shaded points, then the exact
+          // test of the edge at all of them, kEdgeLanes at a time (edgeAtPixels; the pixels it
+          // defers, edgeAtPixel). Each pixel's edges stay in the order of the tile's list.
+          int pending[kBlockPixels];
+          int pending_count = 0;
           while (candidates != 0) {
             const int i = __builtin_ctzll(candidates);
             candidates &= candidates - 1;
             ++work.exact;
-            PixelEdge pixel_edge;
-            int32_t weight = 0;
             setUpIfClear(i);
             PixelFrame& f = scratch.frames[i];
             bool zfail = false;
-            f.centre_count +=
-                quadCountShift(edges.edges[*it], replay, scratch.px[i], scratch.py[i], f, zfail);
+            f.centre_count += quadCountShift(edge, replay, scratch.px[i], scratch.py[i], f, zfail);
             if (zfail) {
-              f.centre_count += centreCountShift(edges.edges[*it], edges.triangles.data(), f,
-                                                 light_centre, eye_position);
+              f.centre_count += centreCountShift(edge, edges.triangles.data(), f, light_centre,
+                                                 eye_position);
             }
-            if (!edgeAtPixel(edges.edges[*it], edges.triangles.data(), f, samples_, pixel_edge,
-                             weight))
-              continue;
-            scratch.edges[i].push_back(pixel_edge);
-            f.reach += std::abs(weight);
-            ++work.inside;
+            pending[pending_count++] = i;
+          }
+          for (int first = 0; first < pending_count; first += kEdgeLanes) {
+            PixelLanes& pixel_lanes = scratch.pixel_lanes;
+            pixel_lanes.count = std::min(kEdgeLanes, pending_count - first);
+            for (int k = 0; k < pixel_lanes.count; ++k)
+              pixel_lanes.setLane(k, scratch.frames[pending[first + k]]);
+            EdgeLanes& sectors = scratch.edge_lanes;
+            const uint32_t passed =
+                edgeAtPixels(edge, edges.triangles.data(), pixel_lanes, sectors, context.simd);
+            for (uint32_t lanes = passed | sectors.deferred; lanes != 0; lanes &= lanes - 1) {
+              const int k = __builtin_ctz(lanes);
+              const int i = pending[first + k];
+              PixelFrame& f = scratch.frames[i];
+              PixelEdge pixel_edge;
+              int32_t weight = 0;
+              if ((passed >> k) & 1u) {
+                pixel_edge = PixelEdge{sectors.edge[k],
+                                       sampleRuns(samples_, sectors.from[k], sectors.to[k])};
+                weight = sectors.weight[k];
+              } else if (!edgeAtPixel(edge, edges.triangles.data(), f, samples_, pixel_edge,
+                                      weight)) {
+                continue;
+              }
+              scratch.edges[i].push_back(pixel_edge);
+              f.reach += std::abs(weight);
+              ++work.inside;
+            }
           }
         }
         // Triangles cutting the light and not wholly in front of it: counted sample by sample,

@@ -300,32 +300,21 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
   return shift;
 }
 
-// The exact test of one edge at one point: false when the edge changes none of its samples,
-// else `out` says which samples it changes and by how much.
-bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
-                 const SortedSamples& samples, PixelEdge& pixel_edge, int32_t& weight_out) {
-  SampleEdge& out = pixel_edge.edge;
-  const dvec3& p = f.p;
-  dvec3 a = e.a - p, b = e.b - p;
-  double za = glm::dot(a, f.axis), zb = glm::dot(b, f.axis);
-  if (za <= f.z_min && zb <= f.z_min) return false;  // behind the point: no ray toward the light
-  // Silhouette from p: the signed number of the edge's triangles on each side of the plane
-  // through p and the edge, from each triangle's own plane (EdgeTriangle). Left out: the
-  // visible triangle; triangles whose plane misses the light and has p and the light centre on
-  // one side (no segment from p to the light crosses them; the stencil does not count them at
-  // the centre either); and triangles whose plane cuts the light unless they lie wholly in
-  // front of it (the others are counted sample by sample).
-  int32_t weight = 0;
-  for (uint32_t k = 0; k < e.triangle_count; ++k) {
-    const EdgeTriangle& t = triangles[e.first_triangle + k];
-    if (t.id == f.primitive) continue;
-    const double at_p = glm::dot(t.normal, p) + t.offset;
-    if (t.cuts ? classifyCutting(e.a, e.b, t.opposite, f) != CuttingPlace::InFront
-               : (at_p > 0.0) == t.light_above)
-      continue;
-    weight -= t.winding * ((at_p > 0.0) - (at_p < 0.0));
-  }
-  if (weight == 0) return false;
+namespace {
+
+// The fields of a pixel's frame the exact test reads, as PixelLanes holds them.
+struct PointFrame {
+  dvec3 p, axis, tangent, bitangent;
+  double z_min, light_radius, light_near;
+  uint32_t primitive;
+};
+
+// The exact test after the silhouette weight (edgeAtPixel): the edge's points a and b relative
+// to p, their depths along the axis; false when it changes no sample, else `out` and the
+// pseudo-angle range [from, to] of its sector (sampleRuns' arguments). The SIMD twin
+// (pixel_edges_simd.cpp) repeats these operations in this order.
+bool edgeSector(int32_t weight, dvec3 a, dvec3 b, double za, double zb, const PointFrame& f,
+                SampleEdge& out, double& from, double& to) {
   // Clip to z >= z_min: the part behind projects outside the light.
   if (za < f.z_min) {
     a += (b - a) * ((f.z_min - za) / (zb - za));
@@ -369,14 +358,114 @@ bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const Pi
   // Crossing from the centre's side onto the other: the triangles on that side (+1 each) are
   // entered, those on the centre's side (-1 each) left.
   out.delta = out.centre_side ? -weight : weight;
-  weight_out = weight;
   // The sector's angles: the shorter way round from one projected end to the other.
   const double angle_a = pseudoAngle(a2.x, a2.y), angle_b = pseudoAngle(b2.x, b2.y);
   double turn = angle_b - angle_a;
   if (turn > 2.0) turn -= 4.0;
   if (turn <= -2.0) turn += 4.0;
-  pixel_edge.runs = turn >= 0.0 ? sampleRuns(samples, angle_a, angle_a + turn)
-                                : sampleRuns(samples, angle_b, angle_b - turn);
+  from = turn >= 0.0 ? angle_a : angle_b;
+  to = turn >= 0.0 ? angle_a + turn : angle_b - turn;
+  return true;
+}
+
+// The silhouette weight at p as edgeAtPixel finds it, where each triangle whose plane cuts the
+// light passes classifyCutting's quick test (the whole triangle nearer than the light: InFront);
+// false where one does not, which only the clipped test decides.
+bool silhouetteWeight(const PotentialEdge& e, const EdgeTriangle* triangles, const PointFrame& f,
+                      double za, double zb, int32_t& weight) {
+  weight = 0;
+  const double limit = f.light_near * (1.0 - 1e-9);
+  for (uint32_t k = 0; k < e.triangle_count; ++k) {
+    const EdgeTriangle& t = triangles[e.first_triangle + k];
+    if (t.id == f.primitive) continue;
+    const double at_p = glm::dot(t.normal, f.p) + t.offset;
+    if (t.cuts) {
+      if (!(std::max({za, zb, glm::dot(t.opposite - f.p, f.axis)}) < limit)) return false;
+    } else if ((at_p > 0.0) == t.light_above) {
+      continue;
+    }
+    weight -= t.winding * ((at_p > 0.0) - (at_p < 0.0));
+  }
+  return true;
+}
+
+PointFrame pointFrame(const PixelLanes& lanes, int k) {
+  return PointFrame{dvec3(lanes.px[k], lanes.py[k], lanes.pz[k]),
+                    dvec3(lanes.ax[k], lanes.ay[k], lanes.az[k]),
+                    dvec3(lanes.tx[k], lanes.ty[k], lanes.tz[k]),
+                    dvec3(lanes.bx[k], lanes.by[k], lanes.bz[k]),
+                    lanes.z_min[k],
+                    lanes.light_radius[k],
+                    lanes.light_near[k],
+                    uint32_t(lanes.primitive[k])};
+}
+
+}  // namespace
+
+void PixelLanes::setLane(int k, const PixelFrame& f) {
+  px[k] = f.p.x, py[k] = f.p.y, pz[k] = f.p.z;
+  ax[k] = f.axis.x, ay[k] = f.axis.y, az[k] = f.axis.z;
+  tx[k] = f.tangent.x, ty[k] = f.tangent.y, tz[k] = f.tangent.z;
+  bx[k] = f.bitangent.x, by[k] = f.bitangent.y, bz[k] = f.bitangent.z;
+  z_min[k] = f.z_min;
+  light_radius[k] = f.light_radius;
+  light_near[k] = f.light_near;
+  primitive[k] = double(f.primitive);
+}
+
+uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangles,
+                            const PixelLanes& pixels, EdgeLanes& out) {
+  uint32_t accepted = 0;
+  out.deferred = 0;
+  for (int k = 0; k < pixels.count; ++k) {
+    const PointFrame f = pointFrame(pixels, k);
+    const dvec3 a = e.a - f.p, b = e.b - f.p;
+    const double za = glm::dot(a, f.axis), zb = glm::dot(b, f.axis);
+    if (za <= f.z_min && zb <= f.z_min) continue;
+    int32_t weight = 0;
+    if (!silhouetteWeight(e, triangles, f, za, zb, weight)) {
+      out.deferred |= 1u << k;
+      continue;
+    }
+    if (weight == 0) continue;
+    out.weight[k] = weight;
+    if (edgeSector(weight, a, b, za, zb, f, out.edge[k], out.from[k], out.to[k]))
+      accepted |= 1u << k;
+  }
+  return accepted;
+}
+
+// The exact test of one edge at one point: false when the edge changes none of its samples,
+// else `out` says which samples it changes and by how much.
+bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
+                 const SortedSamples& samples, PixelEdge& pixel_edge, int32_t& weight_out) {
+  const dvec3& p = f.p;
+  const dvec3 a = e.a - p, b = e.b - p;
+  const double za = glm::dot(a, f.axis), zb = glm::dot(b, f.axis);
+  if (za <= f.z_min && zb <= f.z_min) return false;  // behind the point: no ray toward the light
+  // Silhouette from p: the signed number of the edge's triangles on each side of the plane
+  // through p and the edge, from each triangle's own plane (EdgeTriangle). Left out: the
+  // visible triangle; triangles whose plane misses the light and has p and the light centre on
+  // one side (no segment from p to the light crosses them; the stencil does not count them at
+  // the centre either); and triangles whose plane cuts the light unless they lie wholly in
+  // front of it (the others are counted sample by sample).
+  int32_t weight = 0;
+  for (uint32_t k = 0; k < e.triangle_count; ++k) {
+    const EdgeTriangle& t = triangles[e.first_triangle + k];
+    if (t.id == f.primitive) continue;
+    const double at_p = glm::dot(t.normal, p) + t.offset;
+    if (t.cuts ? classifyCutting(e.a, e.b, t.opposite, f) != CuttingPlace::InFront
+               : (at_p > 0.0) == t.light_above)
+      continue;
+    weight -= t.winding * ((at_p > 0.0) - (at_p < 0.0));
+  }
+  if (weight == 0) return false;
+  const PointFrame frame{p,      f.axis,         f.tangent,     f.bitangent,
+                         f.z_min, f.light_radius, f.light_near, f.primitive};
+  double from = 0.0, to = 0.0;
+  if (!edgeSector(weight, a, b, za, zb, frame, pixel_edge.edge, from, to)) return false;
+  weight_out = weight;
+  pixel_edge.runs = sampleRuns(samples, from, to);
   return true;
 }
 

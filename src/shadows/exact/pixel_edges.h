@@ -134,4 +134,34 @@ int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours
 bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
                  const SortedSamples& samples, PixelEdge& pixel_edge, int32_t& weight_out);
 
+// The same test of one edge at up to kEdgeLanes points at once (SIMD over the points in double,
+// the same operations in the same order; edgeAtPixelsScalar is its scalar twin). The points are
+// the frames' fields edgeAtPixel reads, one lane each (setLane). Returns bit k set for each
+// lane k whose test passes, with its SampleEdge, weight and the pseudo-angle range [from, to]
+// of its sector in `out` (sampleRuns(samples, from, to) gives its runs). A triangle of the edge
+// whose plane cuts the light counts where classifyCutting finds it in front of the light; its
+// quick test (the whole triangle nearer than the light) is made here, and the lanes where that
+// fails are left to edgeAtPixel (bit k of out.deferred), which clips it to the point's cone.
+inline constexpr int kEdgeLanes = 8;
+struct PixelLanes {
+  alignas(64) double px[kEdgeLanes], py[kEdgeLanes], pz[kEdgeLanes];
+  alignas(64) double ax[kEdgeLanes], ay[kEdgeLanes], az[kEdgeLanes];  // axis
+  alignas(64) double tx[kEdgeLanes], ty[kEdgeLanes], tz[kEdgeLanes];  // tangent
+  alignas(64) double bx[kEdgeLanes], by[kEdgeLanes], bz[kEdgeLanes];  // bitangent
+  alignas(64) double z_min[kEdgeLanes], light_radius[kEdgeLanes], light_near[kEdgeLanes];
+  alignas(64) double primitive[kEdgeLanes];  // the visible triangle's id (exact in double)
+  int count = 0;
+  void setLane(int k, const PixelFrame& f);
+};
+struct EdgeLanes {
+  SampleEdge edge[kEdgeLanes];
+  int32_t weight[kEdgeLanes];
+  double from[kEdgeLanes], to[kEdgeLanes];
+  uint32_t deferred = 0;
+};
+uint32_t edgeAtPixels(const PotentialEdge& e, const EdgeTriangle* triangles,
+                      const PixelLanes& pixels, EdgeLanes& out, bool simd);
+uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangles,
+                            const PixelLanes& pixels, EdgeLanes& out);
+
 }  // namespace penumbra
