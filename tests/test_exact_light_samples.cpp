@@ -1,0 +1,89 @@
+// sampleRuns says which blocks of the angle-sorted light samples an edge's sector can reach: the
+// exact soft shadow volumes visit only those. A sample of the sector left out of every run would
+// keep its count and be lit (or shadowed) where the oracle's ray to it is blocked (or not).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "core/pseudo_angle.h"
+#include "shadows/exact/light_samples.h"
+
+namespace penumbra {
+namespace test_exact_light_samples {
+
+// The runs as std::lower_bound and std::upper_bound find them (sampleRuns finds the same
+// indices without branches).
+SampleRuns referenceRuns(const SortedSamples& set, double from, double to) {
+  from -= 1e-5;
+  to += 1e-5;
+  auto run = [&](double lo, double hi, uint32_t& begin, uint32_t& end) {
+    const size_t b = size_t(std::lower_bound(set.block_last.begin(), set.block_last.end(), lo) -
+                            set.block_last.begin());
+    const size_t e = size_t(std::upper_bound(set.block_first.begin(), set.block_first.end(), hi) -
+                            set.block_first.begin());
+    begin = uint32_t(b * kSampleBlock);
+    end = uint32_t(std::max(b, e) * kSampleBlock);
+  };
+  SampleRuns runs;
+  if (from < 0.0) {
+    run(0.0, to, runs.begin[0], runs.end[0]);
+    run(from + 4.0, 4.0, runs.begin[1], runs.end[1]);
+  } else if (to >= 4.0) {
+    run(from, 4.0, runs.begin[0], runs.end[0]);
+    run(0.0, to - 4.0, runs.begin[1], runs.end[1]);
+  } else {
+    run(from, to, runs.begin[0], runs.end[0]);
+  }
+  return runs;
+}
+
+// Sample sets of 1 to 4096 samples (one block, partial blocks, many blocks) and sectors of every
+// width, wrapping past 0 and 4, some starting on a sample's angle and some whose slackened ends
+// fall exactly on a block's first or last angle: the runs are the searches' and hold every
+// sample of the sector.
+TEST(ExactLightSamples, RunsHoldEverySampleOfTheSector) {
+  std::mt19937_64 random(77);
+  auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * (double(random() >> 11) * 0x1.0p-53);
+  };
+  for (const int n : {1, 7, 16, 17, 100, 256, 1000, 4096}) {
+    const SortedSamples set = makeSampleSet(n, uint64_t(n));
+    for (int trial = 0; trial < 400; ++trial) {
+      double from = uniform(0.0, 4.0);
+      if (trial % 5 == 0) {  // starting on a sample's angle
+        const DiskPoint& d = set.disk[size_t(random() % size_t(n))];
+        from = pseudoAngle(d.cos_phi, d.sin_phi);
+      }
+      double to = from + uniform(0.0, 2.0) * (trial % 3 == 0 ? 0.01 : 1.0);
+      // Ends on a block's bound after the slack (the searches' ties: < against <=).
+      if (trial % 7 == 1) {
+        const double bound = set.block_last[random() % set.block_last.size()];
+        if ((bound + 1e-5) - 1e-5 == bound) from = bound + 1e-5, to = from + uniform(0.0, 1.0);
+      } else if (trial % 7 == 2) {
+        const double bound = set.block_first[random() % set.block_first.size()];
+        if ((bound - 1e-5) + 1e-5 == bound && bound - 1e-5 >= 0.0)
+          to = bound - 1e-5, from = std::max(0.0, to - uniform(0.0, 1.0));
+      }
+      const SampleRuns runs = sampleRuns(set, from, to);
+      const SampleRuns expected = referenceRuns(set, from, to);
+      for (int k = 0; k < 2; ++k) {
+        ASSERT_EQ(runs.begin[k], expected.begin[k]) << "n " << n << " [" << from << ", " << to << "]";
+        ASSERT_EQ(runs.end[k], expected.end[k]) << "n " << n << " [" << from << ", " << to << "]";
+      }
+      for (int i = 0; i < n; ++i) {
+        const DiskPoint& d = set.disk[size_t(i)];
+        const double angle = pseudoAngle(d.cos_phi, d.sin_phi);
+        const bool inside = (angle >= from && angle <= to) || (angle + 4.0 >= from && angle + 4.0 <= to);
+        if (!inside) continue;
+        const bool visited = (uint32_t(i) >= runs.begin[0] && uint32_t(i) < runs.end[0]) ||
+                             (uint32_t(i) >= runs.begin[1] && uint32_t(i) < runs.end[1]);
+        ASSERT_TRUE(visited) << "n " << n << " sample " << i << " at " << angle << " in ["
+                             << from << ", " << to << "]";
+      }
+    }
+  }
+}
+
+}  // namespace test_exact_light_samples
+}  // namespace penumbra
