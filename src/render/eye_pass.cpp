@@ -18,9 +18,16 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
     return n;
   }());
   const size_t triangle_count = scene.triangleCount();
-  tris.indices.reserve(triangle_count * 3);
-  tris.payload.reserve(triangle_count);
-  tris.flags.reserve(triangle_count);
+  // Every triangle as the mesh has it, its global id as its payload: filled in parallel (a
+  // dense mesh's few hundred thousand triangles were a serial stretch of the frame).
+  tris.indices.resize(triangle_count * 3);
+  tris.payload.resize(triangle_count);
+  // No back-face culling, not even for closed meshes: the stored depth must be the closest of
+  // every triangle, because shadow-volume light caps are those same triangles drawn again with
+  // bit-identical depth. A culled back face can round a hair closer than the front face at an
+  // eye silhouette, and z-fail would then see a cap in front of the visible point, breaking
+  // the identity z-pass == z-fail.
+  tris.flags.assign(triangle_count, 0);
   EyeBuffers eye;
   eye.mesh_vertex_base.reserve(scene.meshes.size());
   size_t base = 0;
@@ -34,16 +41,16 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
       for (size_t i = chunk * 4096; i < end; ++i)
         tris.clip[base + i] = view.toClip(vec4(mesh.positions[i], 1.0f));
     });
-    // No back-face culling, not even for closed meshes: the stored depth must be the closest of
-    // every triangle, because shadow-volume light caps are those same triangles drawn again
-    // with bit-identical depth. A culled back face can round a hair closer than the front face
-    // at an eye silhouette, and z-fail would then see a cap in front of the visible point,
-    // breaking the identity z-pass == z-fail.
-    const uint8_t flags = 0;
-    for (size_t t = 0; t < mesh.triangleCount(); ++t, ++global_id) {
-      tris.add(uint32_t(base + mesh.indices[t * 3]), uint32_t(base + mesh.indices[t * 3 + 1]),
-               uint32_t(base + mesh.indices[t * 3 + 2]), int32_t(global_id), flags);
-    }
+    const size_t first = global_id, count = mesh.triangleCount();
+    parallelFor((count + 16383) / 16384, [&](size_t chunk) {
+      const size_t end = std::min(count, (chunk + 1) * 16384);
+      for (size_t t = chunk * 16384; t < end; ++t) {
+        for (int k = 0; k < 3; ++k)
+          tris.indices[(first + t) * 3 + size_t(k)] = uint32_t(base + mesh.indices[t * 3 + size_t(k)]);
+        tris.payload[first + t] = int32_t(first + t);
+      }
+    });
+    global_id += uint32_t(count);
     base += mesh.positions.size();
   }
   // rasterizeDepth writes every pixel, background included.
