@@ -12,28 +12,30 @@
 namespace penumbra {
 namespace test_exact_light_samples {
 
-// The runs as std::lower_bound and std::upper_bound find them (sampleRuns finds the same
-// indices without branches).
+// The runs by their definition, scanning every block: from the first block whose last angle
+// is >= lo to the first whose first angle is > hi (at least empty), for [from, to] widened by
+// sampleRuns' slack and split where it wraps past 0 or 4.
 SampleRuns referenceRuns(const SortedSamples& set, double from, double to) {
-  from -= 1e-5;
-  to += 1e-5;
-  auto run = [&](double lo, double hi, uint32_t& begin, uint32_t& end) {
-    const size_t b = size_t(std::lower_bound(set.block_last.begin(), set.block_last.end(), lo) -
-                            set.block_last.begin());
-    const size_t e = size_t(std::upper_bound(set.block_first.begin(), set.block_first.end(), hi) -
-                            set.block_first.begin());
-    begin = uint32_t(b * kSampleBlock);
-    end = uint32_t(std::max(b, e) * kSampleBlock);
+  const double lo = from - 1e-5, hi = to + 1e-5;
+  const size_t blocks = set.block_first.size();
+  auto run = [&](double a, double b, uint32_t& begin, uint32_t& end) {
+    size_t first = blocks, past = blocks;
+    for (size_t k = blocks; k-- > 0;) {
+      if (set.block_last[k] >= a) first = k;
+      if (set.block_first[k] > b) past = k;
+    }
+    begin = uint32_t(first * kSampleBlock);
+    end = uint32_t(std::max(first, past) * kSampleBlock);
   };
   SampleRuns runs;
-  if (from < 0.0) {
-    run(0.0, to, runs.begin[0], runs.end[0]);
-    run(from + 4.0, 4.0, runs.begin[1], runs.end[1]);
-  } else if (to >= 4.0) {
-    run(from, 4.0, runs.begin[0], runs.end[0]);
-    run(0.0, to - 4.0, runs.begin[1], runs.end[1]);
+  if (lo < 0.0) {
+    run(0.0, hi, runs.begin[0], runs.end[0]);
+    run(lo + 4.0, 4.0, runs.begin[1], runs.end[1]);
+  } else if (hi >= 4.0) {
+    run(lo, 4.0, runs.begin[0], runs.end[0]);
+    run(0.0, hi - 4.0, runs.begin[1], runs.end[1]);
   } else {
-    run(from, to, runs.begin[0], runs.end[0]);
+    run(lo, hi, runs.begin[0], runs.end[0]);
   }
   return runs;
 }
