@@ -6,13 +6,16 @@
 // its image) would depend on the CPU's vector width or --scalar. And a tile is kept whenever
 // one of its pixels is kept by the pixel reject (edgeCandidates) with an offset up to the
 // tiles': a tile culled with a candidate pixel in it would drop that pixel's edge, and the
-// pixel would be counted as lit where the oracle finds it shadowed.
+// pixel would be counted as lit where the oracle finds it shadowed. Both hold with and without
+// the tiles' depth parts (EdgeTileParts), which cull more.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 #include <vector>
 
+#include "raster/depth_buffer.h"
+#include "shadows/exact/edge_bins.h"
 #include "shadows/exact/edge_screen_test.h"
 
 namespace penumbra {
@@ -74,6 +77,7 @@ std::vector<float> randomDepth(Random& r, int width, int height) {
     for (int x = 0; x < width; ++x) {
       float z = base + gx * float(x) + gy * float(y);
       if (((x / 11) + (y / 7)) % 5 == 0) z += r.uniform(-0.05f, 0.05f);  // steps
+      if (((x / 5) + (y / 3)) % 7 == 0) z *= 0.3f;  // a far surface behind an edge
       if ((x + 3 * y) % 23 == 0) z = 0.0f;                               // background
       depth[size_t(y) * size_t(width) + size_t(x)] = std::clamp(z, 0.0f, 1.0f);
     }
@@ -83,6 +87,7 @@ std::vector<float> randomDepth(Random& r, int width, int height) {
 TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
   Random r;
   size_t tiles_tested = 0, tiles_kept = 0, candidate_pixels = 0, pixel_twin_blocks = 0;
+  size_t parts_dropped = 0;
   // Widths whose last tile is partial, and rows longer than one vector of tiles.
   for (const int width : {37, 64, 203}) {
     const int height = 2 * kTile + 5;
@@ -101,6 +106,13 @@ TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
           zmin[t] = std::min(zmin[t], z);
           zmax[t] = std::max(zmax[t], z);
         }
+      // The same depths as a depth buffer, for the tiles' depth parts.
+      DepthBuffer buffer;
+      buffer.depth.resizeForOverwrite(width, height);
+      std::copy(depth.begin(), depth.end(), buffer.depth.data());
+      buffer.buildTileRanges();
+      const TileDepthParts depth_parts = tileDepthParts(buffer, 3);
+      const EdgeTileParts parts = depth_parts.view();
       for (int e = 0; e < 6; ++e) {
         const EdgeScreenTest test = randomTest(r, width, height);
         for (int box_index = 0; box_index < 4; ++box_index) {
@@ -120,6 +132,19 @@ TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
           // The largest offset a pixel may have (0 sometimes: the rounding margins alone).
           box.offset = r.below(4) == 0 ? 0.0f : r.uniform(0.0f, 2.0f);
           const size_t room = size_t(columns) * size_t(rows);
+          // With the depth parts half the time; they only ever drop tiles.
+          if (r.coin()) {
+            std::vector<uint32_t> whole(room);
+            int whole_tested = 0;
+            const int whole_count = edgeTileCandidatesScalar(test, box, whole.data(), whole_tested);
+            box.parts = &parts;
+            std::vector<uint32_t> split(room);
+            int split_tested = 0;
+            const int split_count = edgeTileCandidatesScalar(test, box, split.data(), split_tested);
+            ASSERT_LE(split_count, whole_count);
+            ASSERT_EQ(split_tested, whole_tested);
+            parts_dropped += size_t(whole_count - split_count);
+          }
           std::vector<uint32_t> simd_kept(room), scalar_kept(room);
           int simd_tested = -1, scalar_tested = -2;
           const int simd_count =
@@ -182,12 +207,13 @@ TEST(ExactTileReject, TwinsAgreeAndEveryTileWithACandidatePixelIsKept) {
   }
   std::printf(
       "[ exact    ] tile reject: %zu tiles tested, %zu kept, %zu candidate pixels, %zu blocks "
-      "through both pixel twins\n",
-      tiles_tested, tiles_kept, candidate_pixels, pixel_twin_blocks);
+      "through both pixel twins, %zu tiles dropped by the depth parts\n",
+      tiles_tested, tiles_kept, candidate_pixels, pixel_twin_blocks, parts_dropped);
   // Both outcomes were exercised.
   EXPECT_GT(tiles_kept, tiles_tested / 20);
   EXPECT_LT(tiles_kept, tiles_tested - tiles_tested / 20);
   EXPECT_GT(candidate_pixels, 1000u);
+  EXPECT_GT(parts_dropped, 100u);
 }
 
 }  // namespace test_exact_tile_reject

@@ -343,6 +343,47 @@ class RegionBuilder {
 
 }  // namespace
 
+TileDepthParts tileDepthParts(const DepthBuffer& depth, int level) {
+  const int tile = 1 << level;
+  const int width = depth.width(), height = depth.height();
+  const TileDepthRange& range = depth.tileRange(level);
+  const int columns = (width + tile - 1) / tile, rows = (height + tile - 1) / tile;
+  const size_t entries = size_t(columns) * size_t(rows) + kTileBoxPadding;
+  TileDepthParts parts;
+  parts.low_zmin.assign(entries, 0.0f);
+  parts.low_zmax.assign(entries, 0.0f);
+  parts.high_zmin.assign(entries, 0.0f);
+  parts.high_zmax.assign(entries, 0.0f);
+  parallelFor(size_t(rows), [&](size_t ty) {
+    const int y0 = int(ty) * tile, y1 = std::min(height, y0 + tile);
+    for (int tx = 0; tx < columns; ++tx) {
+      const float zmin = range.zmin.at(tx, int(ty)), zmax = range.zmax.at(tx, int(ty));
+      if (!(zmax > 0.0f)) continue;  // only background
+      // Split at the middle of the tile's range (background, depth 0, included: any split
+      // point is correct, and this one needs no pass of its own).
+      const float middle = zmin + 0.5f * (zmax - zmin);
+      const int x0 = tx * tile, x1 = std::min(width, x0 + tile);
+      float low_lo = FLT_MAX, low_hi = 0.0f, high_lo = FLT_MAX, high_hi = 0.0f;
+      for (int y = y0; y < y1; ++y) {
+        const float* row = depth.depth.row(y);
+        for (int x = x0; x < x1; ++x) {
+          const float d = row[x];
+          const bool surface = d > 0.0f, high = d > middle;
+          // Branch-free: which part a pixel falls in follows no pattern.
+          low_lo = surface && !high ? std::min(low_lo, d) : low_lo;
+          low_hi = surface && !high ? std::max(low_hi, d) : low_hi;
+          high_lo = high ? std::min(high_lo, d) : high_lo;
+          high_hi = high ? std::max(high_hi, d) : high_hi;
+        }
+      }
+      const size_t i = ty * size_t(columns) + size_t(tx);
+      if (low_hi > 0.0f) parts.low_zmin[i] = low_lo, parts.low_zmax[i] = low_hi;
+      if (high_hi > 0.0f) parts.high_zmin[i] = high_lo, parts.high_zmax[i] = high_hi;
+    }
+  });
+  return parts;
+}
+
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
                   const DepthBuffer& depth, int level, double margin_footprints,
                   const Bounds3& scene_bounds, bool simd) {
@@ -399,6 +440,8 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   std::vector<float> zmax(range.zmax.size() + kTileBoxPadding, 0.0f);
   std::copy_n(range.zmin.data(), range.zmin.size(), zmin.begin());
   std::copy_n(range.zmax.data(), range.zmax.size(), zmax.begin());
+  const TileDepthParts depth_parts = tileDepthParts(depth, level);
+  const EdgeTileParts tile_parts = depth_parts.view();
   // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
   // item order within a tile: chunks in order, then a counting sort by tile).
   auto binAll = [&](size_t count, const auto& regionOf, const std::vector<EdgeScreenTest>& tests,
@@ -427,6 +470,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
         box.width = view.width;
         box.height = view.height;
         box.offset = bins.offset;
+        box.parts = &tile_parts;
         int tested = 0;
         const int kept_count = edgeTileCandidates(tests[i], box, kept.data(), tested, simd);
         part.tested += uint64_t(tested);

@@ -51,6 +51,9 @@ inline EdgeBinTile edgeBinTile(const EdgeBins& bins, size_t index, int width, in
                      bins.edges.data() + bins.begin[index + 1], x0, std::min(width, x0 + tile),
                      y0, std::min(height, y0 + tile)};
 }
+// The depth parts of the tiles of 2^level pixels (EdgeTileParts) for the tile test.
+TileDepthParts tileDepthParts(const DepthBuffer& depth, int level);
+
 // `scene_bounds`, when not empty, holds every visible point (Scene::bounds): the regions are cut
 // off where they leave it (widened by the margin), which keeps a shadow's streak toward its
 // vanishing point from reaching across the screen.

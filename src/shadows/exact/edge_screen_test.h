@@ -8,6 +8,7 @@
 // float rounding (EdgeScreenTest) plus the pixel's `offset` (PixelBlock): how far the shaded
 // point can lie from the depth-buffer point, in the same units (world distance over w).
 #include <cstdint>
+#include <vector>
 
 namespace penumbra {
 
@@ -84,6 +85,20 @@ uint64_t edgeCandidatesScalar(const EdgeScreenTest& test, const PixelBlock& bloc
 // Both arrays must be readable kTileBoxPadding entries past the last tile of the grid (the
 // SIMD twin loads whole vectors of a row and masks off the lanes past the box).
 inline constexpr int kTileBoxPadding = 16;
+//
+// Optionally (parts non-null), per tile its surface pixels' depths in two parts, split at the
+// middle of their range (tileDepthParts), each part's [zmin, zmax] (zmax 0: no pixel in it).
+// A tile that passes on its whole range is kept only where one part passes as well: a pixel's
+// depth lies in one of them. A tile showing an object's edge over a far surface has a range
+// holding both, and the box between them meets regions no pixel of it is in (on dragon-res2,
+// 45 % of the (edge, tile) pairs handed out, and 11 % of those with a candidate pixel, were on
+// tiles whose depths spread over more than a fifth of their range).
+struct EdgeTileParts {
+  const float* low_zmin;
+  const float* low_zmax;
+  const float* high_zmin;
+  const float* high_zmax;
+};
 struct EdgeTileBox {
   const float* zmin;
   const float* zmax;
@@ -91,6 +106,16 @@ struct EdgeTileBox {
   int tx0, tx1, ty0, ty1;
   int size, width, height;
   float offset;  // the largest PixelBlock::offset of any pixel (EdgeBins::offset)
+  const EdgeTileParts* parts = nullptr;
+};
+// The parts of every tile of 2^level pixels of `depth` (surface pixels only: depth > 0): the
+// four arrays of EdgeTileParts, a tile per entry (row-major, `columns` per row) and
+// kTileBoxPadding zero entries past the last.
+struct TileDepthParts {
+  std::vector<float> low_zmin, low_zmax, high_zmin, high_zmax;
+  EdgeTileParts view() const {
+    return {low_zmin.data(), low_zmax.data(), high_zmin.data(), high_zmax.data()};
+  }
 };
 // Writes the kept tiles' indices (ty columns + tx) to `kept` (room for the box's tiles) in
 // ascending order and returns their number; `tested` gets the number of tiles that hold a

@@ -62,16 +62,28 @@ int edgeTileCandidatesScalar(const EdgeScreenTest& t, const EdgeTileBox& box, ui
       ++tested;
       const float x0 = float(tx * box.size) + 0.5f;
       const float x1 = std::min(x0 + float(box.size - 1), last_centre);
-      // ((a x + b y) + c z) + d at the corner where it is largest (`high`) or smallest.
-      auto at = [&](const float* p, bool high) {
+      // ((a x + b y) + c z) + d at the corner where it is largest (`high`) or smallest, over
+      // depths [lo, hi].
+      auto atDepths = [&](const float* p, bool high, float lo, float hi) {
         const float x = (p[0] >= 0.0f) == high ? x1 : x0;
         const float y = (p[1] >= 0.0f) == high ? y1 : y0;
-        const float z = (p[2] >= 0.0f) == high ? zmax : zmin;
+        const float z = (p[2] >= 0.0f) == high ? hi : lo;
         return ((p[0] * x + p[1] * y) + p[2] * z) + p[3];
       };
-      bool keep = true;
-      for (int k = 0; k < t.region_count && keep; ++k)
-        keep = at(t.region[k], true) >= -(t.region_margin[k] + box.offset);
+      auto at = [&](const float* p, bool high) { return atDepths(p, high, zmin, zmax); };
+      auto regionMeets = [&](float lo, float hi) {
+        for (int k = 0; k < t.region_count; ++k)
+          if (!(atDepths(t.region[k], true, lo, hi) >= -(t.region_margin[k] + box.offset)))
+            return false;
+        return true;
+      };
+      bool keep = regionMeets(zmin, zmax);
+      if (keep && box.parts != nullptr) {
+        const size_t i = row + size_t(tx);
+        const EdgeTileParts& parts = *box.parts;
+        keep = (parts.low_zmax[i] > 0.0f && regionMeets(parts.low_zmin[i], parts.low_zmax[i])) ||
+               (parts.high_zmax[i] > 0.0f && regionMeets(parts.high_zmin[i], parts.high_zmax[i]));
+      }
       if (keep && t.triangle_count > 0 && !t.any_cuts) {
         bool unknown = false;
         int32_t weight = 0;

@@ -140,21 +140,40 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const EdgeTileBox& box, uint
       const auto covered = hn::And(in_row, hn::Gt(zmax, zero));
       tested += int(hn::CountTrue(df, covered));
       if (hn::AllFalse(df, covered)) continue;
-      auto at = [&](const float* p, bool high) {
+      auto atDepths = [&](const float* p, bool high, hn::Vec<decltype(df)> lo,
+                           hn::Vec<decltype(df)> hi) {
         const auto x = (p[0] >= 0.0f) == high ? x1 : x0;
         const auto y = (p[1] >= 0.0f) == high ? y1 : y0;
-        const auto z = (p[2] >= 0.0f) == high ? zmax : zmin;
+        const auto z = (p[2] >= 0.0f) == high ? hi : lo;
         return hn::Add(
             hn::Add(hn::Add(hn::Mul(hn::Set(df, p[0]), x), hn::Mul(hn::Set(df, p[1]), y)),
                     hn::Mul(hn::Set(df, p[2]), z)),
             hn::Set(df, p[3]));
       };
-      // Every plane, without stopping once no lane is left: where that happens varies from
-      // edge to edge and row to row, and the branch was mispredicted more often than the
-      // planes it saved cost (the results are the same).
-      auto keep = covered;
-      for (int k = 0; k < t.region_count; ++k)
-        keep = hn::And(keep, hn::Ge(at(t.region[k], true), hn::Set(df, region_bound[k])));
+      auto at = [&](const float* p, bool high) { return atDepths(p, high, zmin, zmax); };
+      // The lanes of `keep` whose box over depths [lo, hi] is within every region plane. Every
+      // plane, without stopping once no lane is left: where that happens varies from edge to
+      // edge and row to row, and the branch was mispredicted more often than the planes it
+      // saved cost (the results are the same).
+      auto regionMeets = [&](hn::Mask<decltype(df)> keep, hn::Vec<decltype(df)> lo,
+                              hn::Vec<decltype(df)> hi) {
+        for (int k = 0; k < t.region_count; ++k)
+          keep = hn::And(keep, hn::Ge(atDepths(t.region[k], true, lo, hi),
+                                      hn::Set(df, region_bound[k])));
+        return keep;
+      };
+      auto keep = regionMeets(covered, zmin, zmax);
+      if (box.parts != nullptr && !hn::AllFalse(df, keep)) {
+        const size_t i = row + size_t(tx);
+        const EdgeTileParts& parts = *box.parts;
+        const auto low_max = hn::LoadU(df, parts.low_zmax + i);
+        const auto high_max = hn::LoadU(df, parts.high_zmax + i);
+        const auto low = regionMeets(hn::And(keep, hn::Gt(low_max, zero)),
+                                     hn::LoadU(df, parts.low_zmin + i), low_max);
+        const auto high = regionMeets(hn::And(keep, hn::Gt(high_max, zero)),
+                                      hn::LoadU(df, parts.high_zmin + i), high_max);
+        keep = hn::Or(low, high);
+      }
       if (signs && !hn::AllFalse(df, keep)) {
         auto unknown = hn::FirstN(df, 0);
         auto weight = hn::Zero(di);
