@@ -447,5 +447,25 @@ TEST(PerfEquality, RenderFrameReuseEqualsFresh) {
   }
 }
 
+// A FrameRenderer keeps the scene's shading records from frame to frame (shadeFrameInto): its
+// second frame shades with the records its first one built, and must shade exactly as a frame
+// that builds all of its own; if a record held anything of the frame that built it (or were
+// read before it was complete), the second frame would differ.
+TEST(PerfEquality, ShadingRecordsKeptAcrossFramesEqualFresh) {
+  for (const char* name : {"multilight", "year2002", "spheres"}) {
+    const Scene scene = builtinScene(name);
+    FrameOptions options;
+    options.width = 203;
+    options.height = 117;
+    const FrameRenderer renderer(scene, options);
+    FrameResult first, second;
+    renderer.render(first);
+    renderer.render(second);
+    const FrameResult fresh = renderFrame(scene, options);
+    EXPECT_TRUE(first.color == fresh.color) << name;
+    EXPECT_TRUE(second.color == fresh.color) << name;
+  }
+}
+
 }  // namespace test_perf_equality
 }  // namespace penumbra

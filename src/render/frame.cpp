@@ -6,15 +6,19 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "render/eye_pass.h"
+#include "render/shading_kernel.h"
 #include "render/shading_reuse.h"
 
 namespace penumbra {
+
+FrameRenderer::~FrameRenderer() = default;
 
 FrameRenderer::FrameRenderer(const Scene& scene, FrameOptions options)
     : scene_(scene), options_(std::move(options)) {
   ThreadLimit limit(options_.context.threads);
   const auto start = std::chrono::steady_clock::now();
   technique_ = prepareTechnique(options_.technique, scene_);
+  shading_triangles_ = std::make_unique<ShadingTriangleTable>(scene_);
   prepare_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -48,7 +52,7 @@ void FrameRenderer::render(FrameResult& frame) const {
   {
     PassTimer timer(frame.total, "shade");
     shadeFrameInto(scene_, frame.view, frame.eye, visibility, frame.color, context.simd,
-                   channels);
+                   channels, shading_triangles_.get());
   }
 }
 

@@ -1,6 +1,7 @@
 #include "render/shading.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -55,7 +56,7 @@ void checkInputs(const Scene& scene, const View& view, const EyeBuffers& eye,
 void shadePixels(const Scene& scene, const View& view, const EyeBuffers& eye,
                  const std::vector<const Image<float>*>& visibility,
                  const std::vector<const ChannelVisibility*>& channels, Image<vec3>& out,
-                 bool simd) {
+                 bool simd, ShadingTriangleTable* kept) {
   ShadingFrame frame;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const vec3 radiance = lightRadiance(scene.lights[i]);
@@ -92,7 +93,9 @@ void shadePixels(const Scene& scene, const View& view, const EyeBuffers& eye,
   frame.ray_dy = rotation * vec3(0.0f, sy_scale, 0.0f);
   frame.ray_origin =
       rotation * vec3(-1.0f / view.projection[0][0], 1.0f / view.projection[1][1], -1.0f);
-  ShadingTriangleTable triangles(scene);
+  std::unique_ptr<ShadingTriangleTable> own;
+  if (kept == nullptr) own = std::make_unique<ShadingTriangleTable>(scene);
+  ShadingTriangleTable& triangles = kept != nullptr ? *kept : *own;
   // Bands of rows per task: enough work to amortise a task, enough bands (68 at 1080 rows) to
   // balance the workers.
   constexpr int kRowsPerTask = 16;
@@ -114,11 +117,12 @@ Image<vec3> shadeFrame(const Scene& scene, const View& view, const EyeBuffers& e
 
 void shadeFrameInto(const Scene& scene, const View& view, const EyeBuffers& eye,
                     const std::vector<const Image<float>*>& visibility, Image<vec3>& out,
-                    bool simd, const std::vector<const ChannelVisibility*>& channels) {
+                    bool simd, const std::vector<const ChannelVisibility*>& channels,
+                    ShadingTriangleTable* triangles) {
   checkInputs(scene, view, eye, visibility, channels);
   if (out.width() != view.width || out.height() != view.height)
     out.resize(view.width, view.height);
-  shadePixels(scene, view, eye, visibility, channels, out, simd);
+  shadePixels(scene, view, eye, visibility, channels, out, simd, triangles);
 }
 
 }  // namespace penumbra

@@ -6,7 +6,10 @@
 // the scalar twin of the shading kernel (render/shading_kernel.h); both give identical colours.
 // `channels[i]`, when given and not null, is light i's visibility per colour channel (a textured
 // light, shadows/technique.h): the light is shaded as three lights, one per channel, each with
-// its channel's radiance and visibility (shading is linear in both).
+// its channel's radiance and visibility (shading is linear in both). `triangles`, when given,
+// is the scene's table of triangle records kept from frame to frame (a record depends on the
+// triangle alone; FrameRenderer keeps one): the frame then builds only the records no earlier
+// frame needed. Without it, the frame builds its own.
 #include <vector>
 
 #include "core/image.h"
@@ -17,9 +20,12 @@
 
 namespace penumbra {
 
+class ShadingTriangleTable;
+
 void shadeFrameInto(const Scene& scene, const View& view, const EyeBuffers& eye,
                     const std::vector<const Image<float>*>& visibility, Image<vec3>& out,
                     bool simd = true,
-                    const std::vector<const ChannelVisibility*>& channels = {});
+                    const std::vector<const ChannelVisibility*>& channels = {},
+                    ShadingTriangleTable* triangles = nullptr);
 
 }  // namespace penumbra

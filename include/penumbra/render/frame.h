@@ -31,9 +31,12 @@ struct FrameResult {
 // Renders frame after frame of one scene with one technique, prepared once (per-scene state
 // such as the oracle's BVH: shadows/technique.h). The scene must outlive the renderer and stay
 // unchanged.
+class ShadingTriangleTable;
+
 class FrameRenderer {
  public:
   FrameRenderer(const Scene& scene, FrameOptions options);
+  ~FrameRenderer();
   // Overwrites every field of `frame`; the colour image keeps its memory when the size is
   // unchanged, so a frame does not pay for allocating and page-faulting a new image.
   void render(FrameResult& frame) const;
@@ -44,6 +47,8 @@ class FrameRenderer {
   const Scene& scene_;
   FrameOptions options_;
   std::unique_ptr<PreparedTechnique> technique_;
+  // The scene's triangle records for shading, kept from frame to frame (shadeFrameInto).
+  std::unique_ptr<ShadingTriangleTable> shading_triangles_;
   double prepare_ms_ = 0;
 };
 
