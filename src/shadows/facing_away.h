@@ -2,6 +2,7 @@
 // Self-shadowing by facing, and the per-pixel resolve of a technique's visibility built on it.
 #include <atomic>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/image.h"
@@ -61,13 +62,13 @@ inline float resolvedPixel(const FacingAway& away, uint32_t id, PixelValue&& val
 }
 
 // Writes every pixel of `visibility` (sized like the eye buffers) by resolvedPixel with
-// pixel(x, y). One pass over the buffers, rows in parallel.
+// pixel(x, y). One pass over the buffers, rows in parallel. `away` may be one the caller has
+// used already: its decisions are kept per triangle.
 template <class PixelVisibility>
-void resolveVisibility(const Scene& scene, const Light& light, const View& view,
-                       const EyeBuffers& eye, Image<float>& visibility, PixelVisibility&& pixel) {
+void resolveVisibility(const FacingAway& away, const EyeBuffers& eye, Image<float>& visibility,
+                       PixelVisibility&& pixel) {
   const int width = eye.primitive.width(), height = eye.primitive.height();
   visibility.resizeForOverwrite(width, height);
-  const FacingAway away(scene, light, view);
   parallelFor(size_t(height), [&](size_t row) {
     const int y = int(row);
     const uint32_t* ids = eye.primitive.row(y);
@@ -76,6 +77,14 @@ void resolveVisibility(const Scene& scene, const Light& light, const View& view,
       out[x] = resolvedPixel(away, ids[x], [&] { return pixel(x, y); });
     }
   });
+}
+
+// The same with a FacingAway of its own.
+template <class PixelVisibility>
+void resolveVisibility(const Scene& scene, const Light& light, const View& view,
+                       const EyeBuffers& eye, Image<float>& visibility, PixelVisibility&& pixel) {
+  const FacingAway away(scene, light, view);
+  resolveVisibility(away, eye, visibility, std::forward<PixelVisibility>(pixel));
 }
 
 }  // namespace penumbra

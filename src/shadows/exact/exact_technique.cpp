@@ -232,10 +232,12 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   stats.time_ms.emplace_back("overlap", std::min(0.0, wall - passes));
 
   Image<float> soft(width, height, 1.0f);
+  // Which visible triangles face away from the light: decided once per triangle, for the
+  // samples and the resolve.
+  const FacingAway away(scene_, light, view);
   {
     PassTimer timer(stats, "samples");
     const RayOrigins origins(scene_, view);
-    const FacingAway away(scene_, light, view);
     const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
     const dvec3 light_centre(light.center), eye_position(view.eye);
     const dmat4 view_projection(view.view_projection);
@@ -466,8 +468,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   }
   {
     PassTimer timer(stats, "resolve");
-    resolveVisibility(scene_, light, view, eye, result.visibility,
-                      [&](int x, int y) { return soft.at(x, y); });
+    resolveVisibility(away, eye, result.visibility, [&](int x, int y) { return soft.at(x, y); });
   }
   return result;
 }
