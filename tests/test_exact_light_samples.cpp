@@ -43,14 +43,31 @@ SampleRuns referenceRuns(const SortedSamples& set, double from, double to) {
 // Sample sets of 1 to 4096 samples (one block, partial blocks, many blocks) and sectors of every
 // width, wrapping past 0 and 4, some starting on a sample's angle and some whose slackened ends
 // fall exactly on a block's first or last angle: the runs are the searches' and hold every
-// sample of the sector.
+// sample of the sector, and the batched form (SIMD over the ranges) gives the same runs.
 TEST(ExactLightSamples, RunsHoldEverySampleOfTheSector) {
   std::mt19937_64 random(77);
   auto uniform = [&](double lo, double hi) {
     return lo + (hi - lo) * (double(random() >> 11) * 0x1.0p-53);
   };
-  for (const int n : {1, 7, 16, 17, 100, 256, 1000, 4096}) {
+  for (const int n : {1, 7, 16, 17, 100, 256, 512, 1000, 4096}) {
     const SortedSamples set = makeSampleSet(n, uint64_t(n));
+    // The batched form (sampleRunsBatch: counted lane by lane for up to kBatchRunBlocks blocks),
+    // over batches of 1 to 11 of the trials' ranges.
+    std::vector<double> batch_from, batch_to;
+    std::vector<SampleRuns> batch_expected;
+    auto checkBatch = [&] {
+      std::vector<SampleRuns> got(batch_from.size());
+      sampleRunsBatch(set, batch_from.data(), batch_to.data(), int(batch_from.size()),
+                      got.data(), true);
+      for (size_t i = 0; i < got.size(); ++i)
+        for (int k = 0; k < 2; ++k) {
+          ASSERT_EQ(got[i].begin[k], batch_expected[i].begin[k]) << "n " << n << " batch " << i;
+          ASSERT_EQ(got[i].end[k], batch_expected[i].end[k]) << "n " << n << " batch " << i;
+        }
+      batch_from.clear();
+      batch_to.clear();
+      batch_expected.clear();
+    };
     for (int trial = 0; trial < 400; ++trial) {
       double from = uniform(0.0, 4.0);
       if (trial % 5 == 0) {  // starting on a sample's angle
@@ -66,9 +83,17 @@ TEST(ExactLightSamples, RunsHoldEverySampleOfTheSector) {
         const double bound = set.block_first[random() % set.block_first.size()];
         if ((bound - 1e-5) + 1e-5 == bound && bound - 1e-5 >= 0.0)
           to = bound - 1e-5, from = std::max(0.0, to - uniform(0.0, 1.0));
+      } else if (trial % 7 == 3) {  // wrapping past 4, the wrapped end on a block's first
+        const double bound = set.block_first[random() % set.block_first.size()];
+        const double end = bound + 4.0 - 1e-5;
+        if ((end + 1e-5) - 4.0 == bound && bound < 0.9) to = end, from = 4.0 - uniform(0.01, 1.0);
       }
       const SampleRuns runs = sampleRuns(set, from, to);
       const SampleRuns expected = referenceRuns(set, from, to);
+      batch_from.push_back(from);
+      batch_to.push_back(to);
+      batch_expected.push_back(expected);
+      if (int(batch_from.size()) == 1 + trial % 11) checkBatch();
       for (int k = 0; k < 2; ++k) {
         ASSERT_EQ(runs.begin[k], expected.begin[k]) << "n " << n << " [" << from << ", " << to << "]";
         ASSERT_EQ(runs.end[k], expected.end[k]) << "n " << n << " [" << from << ", " << to << "]";
@@ -84,6 +109,7 @@ TEST(ExactLightSamples, RunsHoldEverySampleOfTheSector) {
                              << from << ", " << to << "]";
       }
     }
+    if (!batch_from.empty()) checkBatch();
   }
 }
 

@@ -405,8 +405,8 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             for (int k = 0; k < pixel_lanes.count; ++k)
               pixel_lanes.setLane(k, scratch.frames[pending[first + k]]);
             EdgeLanes& sectors = scratch.edge_lanes;
-            const uint32_t passed =
-                edgeAtPixels(edge, edges.triangles.data(), pixel_lanes, sectors, context.simd);
+            const uint32_t passed = edgeAtPixels(edge, edges.triangles.data(), pixel_lanes,
+                                                 samples_, sectors, context.simd);
             for (uint32_t lanes = passed | sectors.deferred; lanes != 0; lanes &= lanes - 1) {
               const int k = __builtin_ctz(lanes);
               const int i = pending[first + k];
@@ -414,8 +414,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
               PixelEdge pixel_edge;
               int32_t weight = 0;
               if ((passed >> k) & 1u) {
-                pixel_edge = PixelEdge{sectors.edge[k],
-                                       sampleRuns(samples_, sectors.from[k], sectors.to[k])};
+                pixel_edge = PixelEdge{sectors.edge[k], sectors.runs[k]};
                 weight = sectors.weight[k];
               } else if (!edgeAtPixel(edge, edges.triangles.data(), f, samples_, pixel_edge,
                                       weight)) {

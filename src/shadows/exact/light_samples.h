@@ -33,4 +33,12 @@ struct SampleRuns {
 };
 SampleRuns sampleRuns(const SortedSamples& set, double from, double to);
 
+// sampleRuns of count ranges [from[i], to[i]] into out[i]. The SIMD twin (light_samples_simd.cpp)
+// counts, for several ranges at once, the blocks below each bound (the search's index: the
+// bounds are sorted) over every block of a set of up to kBatchRunBlocks blocks (N = 512), and
+// searches range by range for larger sets; the same runs either way.
+inline constexpr size_t kBatchRunBlocks = 32;
+void sampleRunsBatch(const SortedSamples& set, const double* from, const double* to, int count,
+                     SampleRuns* out, bool simd);
+
 }  // namespace penumbra

@@ -414,7 +414,8 @@ void PixelLanes::setLane(int k, const PixelFrame& f) {
 }
 
 uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangles,
-                            const PixelLanes& pixels, EdgeLanes& out) {
+                            const PixelLanes& pixels, const SortedSamples& samples,
+                            EdgeLanes& out) {
   uint32_t accepted = 0;
   out.deferred = 0;
   for (int k = 0; k < pixels.count; ++k) {
@@ -429,8 +430,9 @@ uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangle
     }
     if (weight == 0) continue;
     out.weight[k] = weight;
-    if (edgeSector(weight, a, b, za, zb, f, out.edge[k], out.from[k], out.to[k]))
-      accepted |= 1u << k;
+    if (!edgeSector(weight, a, b, za, zb, f, out.edge[k], out.from[k], out.to[k])) continue;
+    out.runs[k] = sampleRuns(samples, out.from[k], out.to[k]);
+    accepted |= 1u << k;
   }
   return accepted;
 }

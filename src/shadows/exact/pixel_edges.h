@@ -137,8 +137,8 @@ bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const Pi
 // The same test of one edge at up to kEdgeLanes points at once (SIMD over the points in double,
 // the same operations in the same order; edgeAtPixelsScalar is its scalar twin). The points are
 // the frames' fields edgeAtPixel reads, one lane each (setLane). Returns bit k set for each
-// lane k whose test passes, with its SampleEdge, weight and the pseudo-angle range [from, to]
-// of its sector in `out` (sampleRuns(samples, from, to) gives its runs). A triangle of the edge
+// lane k whose test passes, with its SampleEdge, weight, the pseudo-angle range [from, to] of
+// its sector and its sample runs (sampleRuns of that range) in `out`. A triangle of the edge
 // whose plane cuts the light counts where classifyCutting finds it in front of the light; its
 // quick test (the whole triangle nearer than the light) is made here, and the lanes where that
 // fails are left to edgeAtPixel (bit k of out.deferred), which clips it to the point's cone.
@@ -157,11 +157,14 @@ struct EdgeLanes {
   SampleEdge edge[kEdgeLanes];
   int32_t weight[kEdgeLanes];
   double from[kEdgeLanes], to[kEdgeLanes];
+  SampleRuns runs[kEdgeLanes];
   uint32_t deferred = 0;
 };
 uint32_t edgeAtPixels(const PotentialEdge& e, const EdgeTriangle* triangles,
-                      const PixelLanes& pixels, EdgeLanes& out, bool simd);
+                      const PixelLanes& pixels, const SortedSamples& samples, EdgeLanes& out,
+                      bool simd);
 uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangles,
-                            const PixelLanes& pixels, EdgeLanes& out);
+                            const PixelLanes& pixels, const SortedSamples& samples,
+                            EdgeLanes& out);
 
 }  // namespace penumbra

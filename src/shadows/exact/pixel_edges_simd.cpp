@@ -207,9 +207,24 @@ namespace penumbra {
 HWY_EXPORT(EdgeAtPixelsSimd);
 
 uint32_t edgeAtPixels(const PotentialEdge& e, const EdgeTriangle* triangles,
-                      const PixelLanes& pixels, EdgeLanes& out, bool simd) {
-  if (useSimd(simd)) return HWY_DYNAMIC_DISPATCH(EdgeAtPixelsSimd)(e, triangles, pixels, out);
-  return edgeAtPixelsScalar(e, triangles, pixels, out);
+                      const PixelLanes& pixels, const SortedSamples& samples, EdgeLanes& out,
+                      bool simd) {
+  if (!useSimd(simd)) return edgeAtPixelsScalar(e, triangles, pixels, samples, out);
+  const uint32_t passed = HWY_DYNAMIC_DISPATCH(EdgeAtPixelsSimd)(e, triangles, pixels, out);
+  // The passing lanes' runs, all at once (sampleRunsBatch).
+  double from[kEdgeLanes], to[kEdgeLanes];
+  SampleRuns runs[kEdgeLanes];
+  int count = 0;
+  for (uint32_t lanes = passed; lanes != 0; lanes &= lanes - 1) {
+    const int k = __builtin_ctz(lanes);
+    from[count] = out.from[k];
+    to[count++] = out.to[k];
+  }
+  sampleRunsBatch(samples, from, to, count, runs, true);
+  count = 0;
+  for (uint32_t lanes = passed; lanes != 0; lanes &= lanes - 1)
+    out.runs[__builtin_ctz(lanes)] = runs[count++];
+  return passed;
 }
 
 }  // namespace penumbra
@@ -220,8 +235,9 @@ uint32_t edgeAtPixels(const PotentialEdge& e, const EdgeTriangle* triangles,
 namespace penumbra {
 
 uint32_t edgeAtPixels(const PotentialEdge& e, const EdgeTriangle* triangles,
-                      const PixelLanes& pixels, EdgeLanes& out, bool) {
-  return edgeAtPixelsScalar(e, triangles, pixels, out);
+                      const PixelLanes& pixels, const SortedSamples& samples, EdgeLanes& out,
+                      bool) {
+  return edgeAtPixelsScalar(e, triangles, pixels, samples, out);
 }
 
 }  // namespace penumbra
