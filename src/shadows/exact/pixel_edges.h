@@ -156,7 +156,7 @@ struct PixelLanes {
 struct EdgeLanes {
   SampleEdge edge[kEdgeLanes];
   int32_t weight[kEdgeLanes];
-  double from[kEdgeLanes], to[kEdgeLanes];
+  double from[kEdgeLanes] = {}, to[kEdgeLanes] = {};
   SampleRuns runs[kEdgeLanes];
   uint32_t deferred = 0;
 };

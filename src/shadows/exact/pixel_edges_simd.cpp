@@ -211,19 +211,9 @@ uint32_t edgeAtPixels(const PotentialEdge& e, const EdgeTriangle* triangles,
                       bool simd) {
   if (!useSimd(simd)) return edgeAtPixelsScalar(e, triangles, pixels, samples, out);
   const uint32_t passed = HWY_DYNAMIC_DISPATCH(EdgeAtPixelsSimd)(e, triangles, pixels, out);
-  // The passing lanes' runs, all at once (sampleRunsBatch).
-  double from[kEdgeLanes], to[kEdgeLanes];
-  SampleRuns runs[kEdgeLanes];
-  int count = 0;
-  for (uint32_t lanes = passed; lanes != 0; lanes &= lanes - 1) {
-    const int k = __builtin_ctz(lanes);
-    from[count] = out.from[k];
-    to[count++] = out.to[k];
-  }
-  sampleRunsBatch(samples, from, to, count, runs, true);
-  count = 0;
-  for (uint32_t lanes = passed; lanes != 0; lanes &= lanes - 1)
-    out.runs[__builtin_ctz(lanes)] = runs[count++];
+  // The lanes' runs, all at once (sampleRunsBatch); those of lanes that did not pass are
+  // never read (their ranges are a previous call's, or 0).
+  if (passed != 0) sampleRunsBatch(samples, out.from, out.to, pixels.count, out.runs, true);
   return passed;
 }
 
