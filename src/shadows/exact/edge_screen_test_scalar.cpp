@@ -77,12 +77,15 @@ int edgeTileCandidatesScalar(const EdgeScreenTest& t, const EdgeTileBox& box, ui
             return false;
         return true;
       };
-      bool keep = regionMeets(zmin, zmax);
-      if (keep && box.parts != nullptr) {
+      bool keep;
+      if (box.parts != nullptr) {
+        // A part that passes implies the whole range passes (its box lies inside it).
         const size_t i = row + size_t(tx);
         const EdgeTileParts& parts = *box.parts;
         keep = (parts.low_zmax[i] > 0.0f && regionMeets(parts.low_zmin[i], parts.low_zmax[i])) ||
                (parts.high_zmax[i] > 0.0f && regionMeets(parts.high_zmin[i], parts.high_zmax[i]));
+      } else {
+        keep = regionMeets(zmin, zmax);
       }
       if (keep && t.triangle_count > 0 && !t.any_cuts) {
         bool unknown = false;

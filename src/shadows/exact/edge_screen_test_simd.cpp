@@ -162,8 +162,9 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const EdgeTileBox& box, uint
                                       hn::Set(df, region_bound[k])));
         return keep;
       };
-      auto keep = regionMeets(covered, zmin, zmax);
-      if (box.parts != nullptr && !hn::AllFalse(df, keep)) {
+      auto keep = covered;
+      if (box.parts != nullptr) {
+        // A part passing implies the whole range passes (its box lies inside): the parts alone.
         const size_t i = row + size_t(tx);
         const EdgeTileParts& parts = *box.parts;
         const auto low_max = hn::LoadU(df, parts.low_zmax + i);
@@ -173,6 +174,8 @@ int EdgeTileCandidatesSimd(const EdgeScreenTest& t, const EdgeTileBox& box, uint
         const auto high = regionMeets(hn::And(keep, hn::Gt(high_max, zero)),
                                       hn::LoadU(df, parts.high_zmin + i), high_max);
         keep = hn::Or(low, high);
+      } else {
+        keep = regionMeets(covered, zmin, zmax);
       }
       if (signs && !hn::AllFalse(df, keep)) {
         auto unknown = hn::FirstN(df, 0);
