@@ -86,7 +86,8 @@ TEST(ExactLightSamples, RunsHoldEverySampleOfTheSector) {
       } else if (trial % 7 == 3) {  // wrapping past 4, the wrapped end on a block's first
         const double bound = set.block_first[random() % set.block_first.size()];
         const double end = bound + 4.0 - 1e-5;
-        if ((end + 1e-5) - 4.0 == bound && bound < 0.9) to = end, from = 4.0 - uniform(0.01, 1.0);
+        if ((end + 1e-5) - 4.0 == bound && bound < 0.9)
+          to = end, from = 4.0 - uniform(0.01, 1.0);
       }
       const SampleRuns runs = sampleRuns(set, from, to);
       const SampleRuns expected = referenceRuns(set, from, to);
@@ -95,13 +96,15 @@ TEST(ExactLightSamples, RunsHoldEverySampleOfTheSector) {
       batch_expected.push_back(expected);
       if (int(batch_from.size()) == 1 + trial % 11) checkBatch();
       for (int k = 0; k < 2; ++k) {
-        ASSERT_EQ(runs.begin[k], expected.begin[k]) << "n " << n << " [" << from << ", " << to << "]";
+        ASSERT_EQ(runs.begin[k], expected.begin[k]) << "n " << n << " [" << from << ", " << to
+                                                    << "]";
         ASSERT_EQ(runs.end[k], expected.end[k]) << "n " << n << " [" << from << ", " << to << "]";
       }
       for (int i = 0; i < n; ++i) {
         const DiskPoint& d = set.disk[size_t(i)];
         const double angle = pseudoAngle(d.cos_phi, d.sin_phi);
-        const bool inside = (angle >= from && angle <= to) || (angle + 4.0 >= from && angle + 4.0 <= to);
+        const bool inside =
+            (angle >= from && angle <= to) || (angle + 4.0 >= from && angle + 4.0 <= to);
         if (!inside) continue;
         const bool visited = (uint32_t(i) >= runs.begin[0] && uint32_t(i) < runs.end[0]) ||
                              (uint32_t(i) >= runs.begin[1] && uint32_t(i) < runs.end[1]);

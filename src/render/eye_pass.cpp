@@ -45,8 +45,8 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
     parallelFor((count + 16383) / 16384, [&](size_t chunk) {
       const size_t end = std::min(count, (chunk + 1) * 16384);
       for (size_t t = chunk * 16384; t < end; ++t) {
-        for (int k = 0; k < 3; ++k)
-          tris.indices[(first + t) * 3 + size_t(k)] = uint32_t(base + mesh.indices[t * 3 + size_t(k)]);
+        for (size_t k = 0; k < 3; ++k)
+          tris.indices[(first + t) * 3 + k] = uint32_t(base + mesh.indices[t * 3 + k]);
         tris.payload[first + t] = int32_t(first + t);
       }
     });
