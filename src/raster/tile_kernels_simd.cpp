@@ -2,6 +2,8 @@
 // run time (HWY_DYNAMIC_DISPATCH). Same steps, same operation order, same results.
 #include "raster/tile_kernels.h"
 
+#include <type_traits>
+
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -101,6 +103,40 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
                                                 hn::Set(di, e.dx[1] * lanes),
                                                 hn::Set(di, e.dx[2] * lanes)};
   const auto minus_one = hn::Set(di, -1);
+  // One vector of row y from column x, its first `count` lanes in the span. With kSkip a
+  // vector stops as soon as no lane is left to draw; without, it runs branch-free to its
+  // (possibly empty) masked store.
+  auto vectorAt = [&](auto skip, int y, int x, size_t count, hn::Vec<decltype(di)> edge0,
+                      hn::Vec<decltype(di)> edge1, hn::Vec<decltype(di)> edge2,
+                      hn::Vec<decltype(df)> row_depth) {
+    constexpr bool kSkip = decltype(skip)::value;
+    const size_t at = size_t(y - target.y0) * target.stride + size_t(x - target.x0);
+    // Covered: inside all three edges (>= 0); lanes past the span are off.
+    auto inside_i = hn::And(hn::FirstN(di, count), hn::Gt(edge0, minus_one));
+    inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
+    inside_i = hn::And(inside_i, hn::Gt(edge2, minus_one));
+    if (kSkip && hn::AllFalse(di, inside_i)) return;
+    const auto inside = hn::RebindMask(df, inside_i);
+    covered += hn::CountTrue(df, inside);
+    // Depth rule against the stored depth, only where there is a surface (stored depth > 0).
+    const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(x - e.tx0))));
+    const auto stored = hn::MaskedLoad(inside, df, target.depth + at);
+    const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
+    auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
+    if (kSkip && hn::AllFalse(df, write)) return;
+    if (owned) {
+      const auto write_u = hn::RebindMask(du, write);
+      const auto id = hn::MaskedLoad(write_u, du, target.primitive + at);
+      write = hn::RebindMask(df, hn::AndNot(hn::Or(hn::Eq(id, owner0), hn::Eq(id, owner1)),
+                                            write_u));
+      if (kSkip && hn::AllFalse(df, write)) return;
+    }
+    writes += hn::CountTrue(df, write);
+    // Add the contribution to the stencil where both hold.
+    const auto write_i = hn::RebindMask(di, write);
+    const auto s = hn::MaskedLoad(write_i, di, target.stencil + at);
+    hn::BlendedStore(hn::Add(s, add), write_i, di, target.stencil + at);
+  };
   // Each row's span, a batch of rows at a time (row_spans_simd-inl.h).
   BatchedRowSpans row_spans(spans, y_lo, y_hi);
   for (int y = y_lo; y <= y_hi; ++y) {
@@ -109,70 +145,23 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
     const int ry = y - e.ty0;
     const auto row_depth = hn::Set(df, e.dc + e.db * float(ry));
     const RowEdges row{{e.e0[0] + e.dy[0] * ry, e.e0[1] + e.dy[1] * ry, e.e0[2] + e.dy[2] * ry}};
-    const float* depth_row = target.depth + size_t(y - target.y0) * target.stride;
-    int32_t* stencil_row = target.stencil + size_t(y - target.y0) * target.stride;
     const int rx_lo = x_lo - e.tx0;
     auto edge0 = hn::Add(hn::Set(di, row.start[0] + e.dx[0] * rx_lo), lane_step[0]);
     auto edge1 = hn::Add(hn::Set(di, row.start[1] + e.dx[1] * rx_lo), lane_step[1]);
     auto edge2 = hn::Add(hn::Set(di, row.start[2] + e.dx[2] * rx_lo), lane_step[2]);
     if (x_hi - x_lo < lanes) {
-      // A span of one vector (a sliver's row: most rows of a dense mesh's shadow volume quads),
+      // A span of one vector (a sliver's row: most rows of a dense mesh's shadow volume quads)
       // without a branch on what it holds: whether a sliver's row covers a pixel and passes the
       // depth test follows no pattern a branch predictor learns, and masked loads and stores of
-      // an empty mask touch nothing. The same steps as the loop below.
-      const auto inside_i =
-          hn::And(hn::And(hn::FirstN(di, size_t(x_hi - x_lo + 1)), hn::Gt(edge0, minus_one)),
-                  hn::And(hn::Gt(edge1, minus_one), hn::Gt(edge2, minus_one)));
-      const auto inside = hn::RebindMask(df, inside_i);
-      covered += hn::CountTrue(df, inside);
-      const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx_lo))));
-      const auto stored = hn::MaskedLoad(inside, df, depth_row + (x_lo - target.x0));
-      const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
-      auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
-      if (owned) {
-        const auto write_u = hn::RebindMask(du, write);
-        const auto id = hn::MaskedLoad(
-            write_u, du,
-            target.primitive + size_t(y - target.y0) * target.stride + (x_lo - target.x0));
-        write = hn::RebindMask(df, hn::AndNot(hn::Or(hn::Eq(id, owner0), hn::Eq(id, owner1)),
-                                              write_u));
-      }
-      writes += hn::CountTrue(df, write);
-      const auto write_i = hn::RebindMask(di, write);
-      const auto s = hn::MaskedLoad(write_i, di, stencil_row + (x_lo - target.x0));
-      hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + (x_lo - target.x0));
+      // an empty mask touch nothing. Longer spans skip the vectors with nothing to draw (a big
+      // volume polygon's: every span branch-free was slower, bench/README.md).
+      vectorAt(std::false_type(), y, x_lo, size_t(x_hi - x_lo + 1), edge0, edge1, edge2,
+               row_depth);
       continue;
     }
     for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step[0]),
-             edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2])) {
-      const int rx = x - e.tx0;
-      // Covered: inside all three edges (>= 0); lanes past the span are off.
-      auto inside_i = hn::And(hn::FirstN(di, size_t(x_hi - x + 1)), hn::Gt(edge0, minus_one));
-      inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
-      inside_i = hn::And(inside_i, hn::Gt(edge2, minus_one));
-      if (hn::AllFalse(di, inside_i)) continue;
-      const auto inside = hn::RebindMask(df, inside_i);
-      covered += hn::CountTrue(df, inside);
-      // Depth rule against the stored depth, only where there is a surface (stored depth > 0).
-      const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(rx))));
-      const auto stored = hn::MaskedLoad(inside, df, depth_row + (x - target.x0));
-      const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
-      auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
-      if (hn::AllFalse(df, write)) continue;
-      if (owned) {
-        const auto write_u = hn::RebindMask(du, write);
-        const auto id = hn::MaskedLoad(write_u, du, target.primitive + size_t(y - target.y0) *
-                                                                   target.stride + (x - target.x0));
-        const auto own = hn::Or(hn::Eq(id, owner0), hn::Eq(id, owner1));
-        write = hn::RebindMask(df, hn::AndNot(own, write_u));
-        if (hn::AllFalse(df, write)) continue;
-      }
-      writes += hn::CountTrue(df, write);
-      // Add the contribution to the stencil where both hold.
-      const auto write_i = hn::RebindMask(di, write);
-      const auto s = hn::MaskedLoad(write_i, di, stencil_row + (x - target.x0));
-      hn::BlendedStore(hn::Add(s, add), write_i, di, stencil_row + (x - target.x0));
-    }
+             edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2]))
+      vectorAt(std::true_type(), y, x, size_t(x_hi - x + 1), edge0, edge1, edge2, row_depth);
   }
   counts.covered += covered;
   counts.writes += writes;

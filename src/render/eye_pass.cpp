@@ -22,12 +22,11 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
   // dense mesh's few hundred thousand triangles were a serial stretch of the frame).
   tris.indices.resize(triangle_count * 3);
   tris.payload.resize(triangle_count);
-  // No back-face culling, not even for closed meshes: the stored depth must be the closest of
-  // every triangle, because shadow-volume light caps are those same triangles drawn again with
-  // bit-identical depth. A culled back face can round a hair closer than the front face at an
-  // eye silhouette, and z-fail would then see a cap in front of the visible point, breaking
-  // the identity z-pass == z-fail.
-  tris.flags.assign(triangle_count, 0);
+  // No flags (empty: 0 for every triangle), so no back-face culling, not even for closed
+  // meshes: the stored depth must be the closest of every triangle, because shadow-volume light
+  // caps are those same triangles drawn again with bit-identical depth. A culled back face can
+  // round a hair closer than the front face at an eye silhouette, and z-fail would then see a
+  // cap in front of the visible point, breaking the identity z-pass == z-fail.
   EyeBuffers eye;
   eye.mesh_vertex_base.reserve(scene.meshes.size());
   size_t base = 0;

@@ -368,19 +368,26 @@ bool edgeSector(int32_t weight, dvec3 a, dvec3 b, double za, double zb, const Po
   return true;
 }
 
-// The silhouette weight at p as edgeAtPixel finds it, where each triangle whose plane cuts the
-// light passes classifyCutting's quick test (the whole triangle nearer than the light: InFront);
-// false where one does not, which only the clipped test decides.
-bool silhouetteWeight(const PotentialEdge& e, const EdgeTriangle* triangles, const PointFrame& f,
-                      double za, double zb, int32_t& weight) {
+// The silhouette from p: the signed number of the edge's triangles on each side of the plane
+// through p and the edge, from each triangle's own plane (EdgeTriangle). Left out: the visible
+// triangle; triangles whose plane misses the light and has p and the light centre on one side
+// (no segment from p to the light crosses them; the stencil does not count them at the centre
+// either); and triangles whose plane cuts the light unless they lie wholly in front of it (the
+// others are counted sample by sample). `inFront(t)` says which of the last: kCounts, kSkipped,
+// or kUndecided, which stops the count (false).
+enum class CutPlace { kCounts, kSkipped, kUndecided };
+template <class InFront>
+bool silhouetteWeight(const PotentialEdge& e, const EdgeTriangle* triangles, const dvec3& p,
+                      uint32_t primitive, InFront&& inFront, int32_t& weight) {
   weight = 0;
-  const double limit = f.light_near * (1.0 - 1e-9);
   for (uint32_t k = 0; k < e.triangle_count; ++k) {
     const EdgeTriangle& t = triangles[e.first_triangle + k];
-    if (t.id == f.primitive) continue;
-    const double at_p = glm::dot(t.normal, f.p) + t.offset;
+    if (t.id == primitive) continue;
+    const double at_p = glm::dot(t.normal, p) + t.offset;
     if (t.cuts) {
-      if (!(std::max({za, zb, glm::dot(t.opposite - f.p, f.axis)}) < limit)) return false;
+      const CutPlace place = inFront(t);
+      if (place == CutPlace::kUndecided) return false;
+      if (place == CutPlace::kSkipped) continue;
     } else if ((at_p > 0.0) == t.light_above) {
       continue;
     }
@@ -423,8 +430,16 @@ uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangle
     const dvec3 a = e.a - f.p, b = e.b - f.p;
     const double za = glm::dot(a, f.axis), zb = glm::dot(b, f.axis);
     if (za <= f.z_min && zb <= f.z_min) continue;
+    // classifyCutting's quick test alone (the whole triangle nearer than the light: InFront);
+    // where it fails, only the clipped test decides: edgeAtPixel's.
+    const double limit = f.light_near * (1.0 - 1e-9);
+    auto quickInFront = [&](const EdgeTriangle& t) {
+      return std::max({za, zb, glm::dot(t.opposite - f.p, f.axis)}) < limit
+                 ? CutPlace::kCounts
+                 : CutPlace::kUndecided;
+    };
     int32_t weight = 0;
-    if (!silhouetteWeight(e, triangles, f, za, zb, weight)) {
+    if (!silhouetteWeight(e, triangles, f.p, f.primitive, quickInFront, weight)) {
       out.deferred |= 1u << k;
       continue;
     }
@@ -445,22 +460,14 @@ bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const Pi
   const dvec3 a = e.a - p, b = e.b - p;
   const double za = glm::dot(a, f.axis), zb = glm::dot(b, f.axis);
   if (za <= f.z_min && zb <= f.z_min) return false;  // behind the point: no ray toward the light
-  // Silhouette from p: the signed number of the edge's triangles on each side of the plane
-  // through p and the edge, from each triangle's own plane (EdgeTriangle). Left out: the
-  // visible triangle; triangles whose plane misses the light and has p and the light centre on
-  // one side (no segment from p to the light crosses them; the stencil does not count them at
-  // the centre either); and triangles whose plane cuts the light unless they lie wholly in
-  // front of it (the others are counted sample by sample).
   int32_t weight = 0;
-  for (uint32_t k = 0; k < e.triangle_count; ++k) {
-    const EdgeTriangle& t = triangles[e.first_triangle + k];
-    if (t.id == f.primitive) continue;
-    const double at_p = glm::dot(t.normal, p) + t.offset;
-    if (t.cuts ? classifyCutting(e.a, e.b, t.opposite, f) != CuttingPlace::InFront
-               : (at_p > 0.0) == t.light_above)
-      continue;
-    weight -= t.winding * ((at_p > 0.0) - (at_p < 0.0));
-  }
+  silhouetteWeight(e, triangles, p, f.primitive,
+                   [&](const EdgeTriangle& t) {
+                     return classifyCutting(e.a, e.b, t.opposite, f) == CuttingPlace::InFront
+                                ? CutPlace::kCounts
+                                : CutPlace::kSkipped;
+                   },
+                   weight);
   if (weight == 0) return false;
   const PointFrame frame{p,      f.axis,         f.tangent,     f.bitangent,
                          f.z_min, f.light_radius, f.light_near, f.primitive};
