@@ -496,10 +496,10 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
       [&](size_t i) {
         const Region region = builder.region(edges.edges[i], edges.triangles.data());
         EdgeScreenTest& test = bins.tests[i];
-        test.region_count = region.plane_count;
+        test.region_count = int8_t(region.plane_count);
         for (int k = 0; k < region.plane_count; ++k)
           toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
-        test.triangle_count = region.triangle_count;
+        test.triangle_count = int8_t(region.triangle_count);
         const PotentialEdge& e = edges.edges[i];
         auto fromLight = [&](const dvec3& v, float out[3]) {
           const dvec3 d = v - light_centre;
@@ -519,7 +519,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
           // A cutting triangle in front of the light counts on either side: -winding where its
           // plane value is positive, +winding where negative (edgeAtPixel: weight -= winding *
           // sign); the kernel adds `weight` on the positive side and subtracts it on the other.
-          test.weight[k] = t.cuts ? -t.winding : t.light_above ? t.winding : -t.winding;
+          test.weight[k] = int8_t(t.cuts ? -t.winding : t.light_above ? t.winding : -t.winding);
           const double extent = std::max(ends_extent, fromLight(t.opposite, test.opposite[k]));
           test.cut_extent[k] = float((extent + double(light.radius)) * (1.0 + 1e-6));
         }
@@ -531,7 +531,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
       [&](size_t i) {
         const Region region = builder.region(edges.cutting[i]);
         EdgeScreenTest& test = bins.cutting_tests[i];
-        test.region_count = region.plane_count;
+        test.region_count = int8_t(region.plane_count);
         for (int k = 0; k < region.plane_count; ++k)
           toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
         return region;

@@ -7,6 +7,7 @@
 // as a silhouette: every plane within its margin of the point. The margin is the plane's own
 // float rounding (EdgeScreenTest) plus the pixel's `offset` (PixelBlock): how far the shaded
 // point can lie from the depth-buffer point, in the same units (world distance over w).
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,18 +20,26 @@ inline constexpr int kMaxRegionPlanes = 8;
 // E(sx, sy, z) = ((a sx + b sy) + c z) + d, in float, in this order. The margins bound its float
 // rounding at any pixel centre of the image with z in [0, 1]; a point is within a plane's
 // margin where E >= -(margin + offset), offset the pixel's (or the tile row's).
-struct EdgeScreenTest {
-  float region[kMaxRegionPlanes][4];
-  float region_margin[kMaxRegionPlanes];
-  int region_count = 0;
+//
+// Laid out by how often it is read: the quick reject reads a tile's edges once per block of
+// 64 pixels, from records spread over the whole mesh, and was bound by fetching them. Its
+// first cache line holds the counts, signs, weights and every margin, the next two the region
+// planes, the fourth the triangles' planes; what only a triangle cutting the light needs comes
+// after, fetched when one does (four lines of six for the usual edge).
+struct alignas(64) EdgeScreenTest {
+  int8_t region_count = 0;
   // Triangles: a sign is known where |E| > margin + offset; included (crossed between point
   // and light) where that sign is not the light centre's; an included triangle adds `weight`
   // (+-1).
-  float triangle[4][4];
+  int8_t triangle_count = 0;  // 0: no silhouette test (more than 4 triangles)
+  bool any_cuts = false;      // one of cuts[0 .. triangle_count)
+  int8_t weight[4] = {};
+  bool light_above[4] = {};
+  bool cuts[4] = {};
+  float region_margin[kMaxRegionPlanes];
   float triangle_margin[4];
-  bool light_above[4];
-  int32_t weight[4];
-  int triangle_count = 0;  // 0: no silhouette test (more than 4 triangles)
+  float region[kMaxRegionPlanes][4];
+  float triangle[4][4];
   // A triangle whose plane cuts the light (`cuts`) is included, on either side, where its part
   // toward the light lies wholly in front of the light (pixel_edges.h, classifyCutting), and
   // adds `weight` on its positive side, -`weight` on its negative side; elsewhere it is not
@@ -41,9 +50,12 @@ struct EdgeScreenTest {
   float ends[2][3];        // the edge's corners a', b'
   float opposite[4][3];    // each triangle's third corner
   float cut_extent[4];     // the largest |v'| of the triangle's corners plus r, rounded up
-  bool cuts[4];
-  bool any_cuts = false;  // one of cuts[0 .. triangle_count)
 };
+// The lines every quick reject of an edge may read (all but the cutting triangles' part).
+inline constexpr size_t kEdgeTestHotBytes = offsetof(EdgeScreenTest, ends);
+static_assert(offsetof(EdgeScreenTest, triangle_margin) + 4 * sizeof(float) <= 64,
+              "the counts, signs, weights and margins share the first cache line");
+static_assert(kEdgeTestHotBytes == 4 * 64, "the planes fill the next three lines");
 
 // Up to 64 pixels: screen position of the centre and stored depth; `active` has bit i set for
 // the pixels to test. For the cutting triangles' test, per pixel q = c - p0 from its

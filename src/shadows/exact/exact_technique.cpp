@@ -373,7 +373,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         for (const uint32_t* it = begin; it != end; ++it) {
           if (end - it > kAhead) {
             const char* ahead = reinterpret_cast<const char*>(&bins.tests[it[kAhead]]);
-            for (size_t line = 0; line < sizeof(EdgeScreenTest); line += 64)
+            for (size_t line = 0; line < kEdgeTestHotBytes; line += 64)
               __builtin_prefetch(ahead + line);
           }
           work.tests += uint64_t(__builtin_popcountll(block.active));
@@ -411,16 +411,21 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
               const int k = __builtin_ctz(lanes);
               const int i = pending[first + k];
               PixelFrame& f = scratch.frames[i];
-              PixelEdge pixel_edge;
+              std::vector<PixelEdge>& pixel_edges = scratch.edges[i];
+              // Written in place: a PixelEdge built on the stack from the lanes' fields and
+              // copied in was read back, in 16-byte pieces, before its narrower stores had
+              // left the store buffer (a stall on every accepted pair).
+              PixelEdge& pixel_edge = pixel_edges.emplace_back();
               int32_t weight = 0;
               if ((passed >> k) & 1u) {
-                pixel_edge = PixelEdge{sectors.edge[k], sectors.runs[k]};
+                pixel_edge.edge = sectors.edge[k];
+                pixel_edge.runs = sectors.runs[k];
                 weight = sectors.weight[k];
               } else if (!edgeAtPixel(edge, edges.triangles.data(), f, samples_, pixel_edge,
                                       weight)) {
+                pixel_edges.pop_back();
                 continue;
               }
-              scratch.edges[i].push_back(pixel_edge);
               f.reach += std::abs(weight);
               ++work.inside;
             }
