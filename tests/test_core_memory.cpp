@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <thread>
 #include <vector>
 
 #include "core/memory.h"
@@ -33,6 +34,34 @@ TEST(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
   }
   // If it failed: freeing the buffer gave the heap top back to the kernel.
   EXPECT_GE(mallinfo2().arena, kBytes) << "the freed buffer was trimmed from the heap";
+#endif
+}
+
+// The passes of a frame allocate on the worker threads too, in their own arenas, which grow by
+// heaps of at most 64 MiB. A heap past an arena's first was given back to the kernel when the
+// frame freed it, and mapped again by the next frame: on dragon-res2 the eye pass took 45 ms
+// instead of 12 in some runs, all of it page faults (bench/README.md, 2026-11-28 third stop).
+TEST(CoreMemory, WorkerThreadHeapsStayMappedAfterFree) {
+#if !defined(__GLIBC__)
+  GTEST_SKIP() << "the policy only acts on glibc's malloc";
+#elif defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer replaces malloc: mallopt and mallinfo2 do not apply";
+#else
+  keepFrameBuffersMapped();
+  // Five buffers of 20 MB (each under the 32 MiB mmap threshold): more than one heap's 64 MiB.
+  constexpr size_t kBytes = size_t(20) << 20;
+  constexpr int kBuffers = 5;
+  size_t peak = 0;
+  std::thread worker([&] {
+    std::vector<std::vector<char>> buffers;
+    for (int i = 0; i < kBuffers; ++i) buffers.emplace_back(kBytes, char(i));
+    peak = mallinfo2().arena;
+  });
+  worker.join();
+  ASSERT_GE(peak, kBuffers * kBytes);
+  // If it failed: the worker's extra heaps went back to the kernel when it freed the buffers.
+  EXPECT_GE(mallinfo2().arena, kBuffers * kBytes)
+      << "a worker thread's freed heaps were unmapped (peak " << peak << " bytes)";
 #endif
 }
 
