@@ -7,8 +7,8 @@
 #
 #   [PENUMBRA_BIN=build/penumbra] bench/exact_vs_oracle.sh [--samples N] [--size WxH] [--frames R] [scene ...]
 # Default: every built-in scene and scene file at its own size, N = 256, R = 3 timed frames
-# after one warm-up. Writes under out/exact_vs_oracle/: the two visibility EXRs, the depth
-# (mask) and a heat map per scene.
+# after the render command's three warm-up frames. Writes under out/exact_vs_oracle/: the two
+# visibility EXRs, the depth (mask) and a heat map per scene.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 samples=256

@@ -7,8 +7,8 @@
 # bias) at several resolutions per cube face.
 #
 #   bench/hard_shadow_error.sh [--size WxH] [--frames R] [--maps "256 1024 4096"] [scene ...]
-# Default: columns and fractal at 640x427, R = 3 timed frames after one warm-up. Writes the
-# visibility EXRs and depth masks under out/hard_shadow_error/.
+# Default: columns and fractal at 640x427, R = 3 timed frames after the render command's three
+# warm-up frames. Writes the visibility EXRs and depth masks under out/hard_shadow_error/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 frames=3
