@@ -15,13 +15,26 @@
 namespace penumbra {
 namespace test_core_memory {
 
-TEST(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#define PENUMBRA_MALLOC_POLICY_APPLIES 1
+#endif
+
+// Each test runs with the policy applied, where it can act.
+class CoreMemory : public ::testing::Test {
+ protected:
+  void SetUp() override {
 #if !defined(__GLIBC__)
-  GTEST_SKIP() << "the policy only acts on glibc's malloc";
+    GTEST_SKIP() << "the policy only acts on glibc's malloc";
 #elif defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "AddressSanitizer replaces malloc: mallopt and mallinfo2 do not apply";
+    GTEST_SKIP() << "AddressSanitizer replaces malloc: mallopt and mallinfo2 do not apply";
 #else
-  keepFrameBuffersMapped();
+    keepFrameBuffersMapped();
+#endif
+  }
+};
+
+TEST_F(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
+#if defined(PENUMBRA_MALLOC_POLICY_APPLIES)
   constexpr size_t kBytes = size_t(1920) * 1080 * 4;  // one 1080p depth buffer
   const struct mallinfo2 before = mallinfo2();
   {
@@ -41,13 +54,8 @@ TEST(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
 // heaps of at most 64 MiB. A heap past an arena's first was given back to the kernel when the
 // frame freed it, and mapped again by the next frame: on dragon-res2 the eye pass took 45 ms
 // instead of 12 in some runs, all of it page faults (bench/README.md, 2026-11-28 third stop).
-TEST(CoreMemory, WorkerThreadHeapsStayMappedAfterFree) {
-#if !defined(__GLIBC__)
-  GTEST_SKIP() << "the policy only acts on glibc's malloc";
-#elif defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "AddressSanitizer replaces malloc: mallopt and mallinfo2 do not apply";
-#else
-  keepFrameBuffersMapped();
+TEST_F(CoreMemory, WorkerThreadHeapsStayMappedAfterFree) {
+#if defined(PENUMBRA_MALLOC_POLICY_APPLIES)
   // Five buffers of 20 MB (each under the 32 MiB mmap threshold): more than one heap's 64 MiB.
   constexpr size_t kBytes = size_t(20) << 20;
   constexpr int kBuffers = 5;
