@@ -1,9 +1,9 @@
 // Whole frames and single techniques.
 //
-// HardShadowFrame/<scene>/<size>: renderFrame with shadow volumes (VolumeMode::Auto): eye pass,
-// silhouettes and volumes per light, stencil resolve, shading. This is the frame the llvmpipe
-// peer (bench/peer/) renders with GL z-fail stencil volumes; bench/run_benchmarks.sh quotes the
-// ratio of the two fps.
+// HardShadowFrame/<scene>/<size>: a FrameRenderer's warm frame (timed_frames.h) with shadow
+// volumes (VolumeMode::Auto): eye pass, silhouettes and volumes per light, stencil resolve,
+// shading. This is the frame the llvmpipe peer (bench/peer/) renders with GL z-fail stencil
+// volumes; bench/run_benchmarks.sh quotes the ratio of the two fps.
 //
 // HardShadowFrame/<scene>/<size>/hierarchical-volume: the same frame with `hierarchical-volume`
 // (the same image; per-pixel work only in tiles a volume's boundary crosses), beside it.
@@ -67,24 +67,14 @@ void hardShadowFrame(benchmark::State& state, const std::string& scene_name, int
   options.width = width;
   options.height = height;
   options.technique = TechniqueConfig(technique);
-  PassTimes passes;
-  Stats last;
-  double seconds = 0.0;
-  for (auto _ : state) {
-    // Timed by hand too: fps must be frames per wall-clock second, and the library's rate
-    // counters divide by the main thread's CPU time.
-    const auto start = std::chrono::steady_clock::now();
-    FrameResult frame = renderFrame(scene, options);
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    benchmark::DoNotOptimize(frame.color.data());
-    passes.add(frame.total);
-    last = std::move(frame.total);
-  }
-  if (seconds <= 0.0) return;
-  const double fps = double(state.iterations()) / seconds;
-  state.counters["fps"] = fps;
-  state.counters["frame_ms"] = 1e3 / fps;
-  passes.report(state);
+  // Prepared once and rendering into one kept FrameResult, as the peer keeps its buffers,
+  // programs and framebuffer across frames (bench/peer/peer_renderer.cpp): both time the
+  // frame loop's work, neither the scene's upload.
+  const FrameRenderer renderer(scene, options);
+  FrameResult frame;
+  if (!timeWarmFrames(state, renderer, frame)) return;
+  const double fps = state.counters["fps"];
+  const Stats& last = frame.total;
   state.counters["scene_triangles"] = double(scene.triangleCount());
   // Set up for rasterization after clipping, eye pass and volumes together.
   state.counters["triangles"] = double(last.triangles);

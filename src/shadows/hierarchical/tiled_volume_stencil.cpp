@@ -1,6 +1,7 @@
 #include "shadows/hierarchical/tiled_volume_stencil.h"
 
 #include <algorithm>
+#include <bit>
 #include <vector>
 
 #include "core/parallel.h"
@@ -33,6 +34,7 @@ struct Cell {
   bool surface = false;
   float zmin = 0.0f, zmax = 0.0f;
   int sample_x = 0, sample_y = 0;
+  int surface_pixels = 0;  // with surface ranges; otherwise every pixel of a surface cell
 };
 
 class BinTile {
@@ -60,26 +62,31 @@ class BinTile {
         c.zmin = zmin;
         c.sample_x = c.x0;
         c.sample_y = c.y0;
+        c.surface_pixels = (c.x1 - c.x0 + 1) * (c.y1 - c.y0 + 1);
         if (zmin > 0.0f || !surface_ranges) continue;
         // Background pixels (depth 0, infinity) would stretch the box to infinity, where every
         // volume extruded away from the light reaches: the box is taken over the surface
         // pixels only (the stencil is never read on the background), at the cost of reading
         // the tile's depths. The sample is the first surface pixel.
         c.zmin = zmax;
+        c.surface_pixels = 0;
         bool found = false;
         for (int y = c.y0; y <= c.y1; ++y)
           for (int x = c.x0; x <= c.x1; ++x) {
             const float d = tile_depth[(y - box.y0) * kBinTileSize + (x - box.x0)];
             ++work.z_reads;
             if (d <= 0.0f) continue;
+            ++c.surface_pixels;
             c.zmin = std::min(c.zmin, d);
             if (!found) c.sample_x = x, c.sample_y = y, found = true;
           }
       }
-    for (const Cell& c : cells_) {
+    for (int i = 0; i < per_row_ * per_row_; ++i) {
+      const Cell& c = cells_[i];
       if (!c.surface) continue;
+      if (!any_surface_) sample_ = &c;
       any_surface_ = true;
-      ++surface_cells_;
+      surface_mask_ |= uint64_t(1) << i;
       zmin_ = std::min(zmin_, c.zmin);
       zmax_ = std::max(zmax_, c.zmax);
     }
@@ -87,7 +94,10 @@ class BinTile {
   // The depth range of the bin tile's surface pixels (without surface_ranges, z-min 0 where a
   // tile holds background): its box holds every cell's.
   bool anySurface() const { return any_surface_; }
-  int surfaceCells() const { return surface_cells_; }
+  // Bit cy * perRow() + cx set for each cell with surface pixels.
+  uint64_t surfaceMask() const { return surface_mask_; }
+  // A cell with surface pixels, whose sample stands for the whole bin tile.
+  const Cell& sampleCell() const { return *sample_; }
   float zmin() const { return zmin_; }
   float zmax() const { return zmax_; }
   int perRow() const { return per_row_; }
@@ -101,12 +111,22 @@ class BinTile {
     cy0 = (e.y0 - box_.y0) >> level_;
     cy1 = (e.y1 - box_.y0) >> level_;
   }
+  // The cells the rect's pixels touch, as bits of surfaceMask()'s layout.
+  uint64_t cellMask(const TileEdges& e) const {
+    int cx0, cy0, cx1, cy1;
+    cellRange(e, cx0, cy0, cx1, cy1);
+    const uint64_t row = ((uint64_t(1) << (cx1 - cx0 + 1)) - 1) << cx0;
+    uint64_t mask = 0;
+    for (int cy = cy0; cy <= cy1; ++cy) mask |= row << (cy * per_row_);
+    return mask;
+  }
 
  private:
   TileBox box_;
   int level_, per_row_;
   bool any_surface_ = false;
-  int surface_cells_ = 0;
+  uint64_t surface_mask_ = 0;
+  const Cell* sample_ = nullptr;
   float zmin_ = 1.0f, zmax_ = 0.0f;
   Cell cells_[kMaxCells];
 };
@@ -205,7 +225,6 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   if (((!zfail || !set.may_contain_eye[v]) && tile.zmin() > set.depth_max[v]) ||
       (zfail && tile.zmax() < set.depth_min[v]))
     return;
-  uint8_t touched[kMaxCells] = {}, boundary[kMaxCells] = {};
   int32_t sample[kMaxCells] = {};
   const TileBox& box = tile.box();
   // The triangles' rects set up here, with their class against the bin tile's box, kept for
@@ -226,7 +245,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // Each triangle first against the box of its whole rect's pixels and the bin tile's surface
   // range: each smaller tile's box lies inside it, so an answer other than Crossing holds for
   // every tile of the rect (which is then classified without a test of its own: the sample
-  // decides). A rect of one tile skips it (its tile's own test follows at once).
+  // decides).
+  bool any_crossing = false;
   for (const uint32_t* k = first; k != last && !per_pixel_only; ++k) {
     if (last - k > ptrdiff_t(kBinLookahead))
       prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
@@ -234,55 +254,92 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     TileEdges e;
     // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-    TileBoxClass whole = TileBoxClass::Crossing;
-    int cx0, cy0, cx1, cy1;
-    tile.cellRange(e, cx0, cy0, cx1, cy1);
-    if (cx0 != cx1 || cy0 != cy1) {
-      ++work.tally.tested;
-      whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
-      if (whole == TileBoxClass::Front && silhouetteMeets(t, e.x0, e.y0, e.x1, e.y1))
-        whole = TileBoxClass::Crossing;  // decide tile by tile
+    ++work.tally.tested;
+    TileBoxClass whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
+    // The count changes across a silhouette edge on both of its sides, beyond the rect of the
+    // quad that holds it: the edge is tested against the whole bin tile.
+    if (whole == TileBoxClass::Front && silhouetteMeets(t, box.x0, box.y0, box.x1, box.y1))
+      whole = TileBoxClass::Crossing;  // decide tile by tile
+    if (whole == TileBoxClass::Outside) {
+      ++work.tally.culled;
+      continue;  // no pixel centre of the bin tile under it
     }
-    if (whole == TileBoxClass::Outside) ++work.tally.culled;
+    any_crossing |= whole == TileBoxClass::Crossing;
     rects.push_back({&t, e, whole});
   }
-  for (const Rect& r : rects) {
-    const SetupTriangle& t = *r.t;
-    if (r.whole == TileBoxClass::Outside) continue;
-    const int32_t contribution = drawn(t).contribution;
-    int cx0, cy0, cx1, cy1;
-    tile.cellRange(r.e, cx0, cy0, cx1, cy1);
-    for (int cy = cy0; cy <= cy1; ++cy)
-      for (int cx = cx0; cx <= cx1; ++cx) {
-        const int i = cy * n + cx;
-        const Cell& c = tile.cell(cx, cy);
-        if (!c.surface || boundary[i]) continue;
-        TileBoxClass cls = r.whole;
-        if (cls == TileBoxClass::Crossing) {
-          ++work.tally.tested;
-          cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
-        }
-        if (cls == TileBoxClass::Outside) {
-          ++work.tally.culled;
-          continue;
-        }
-        touched[i] = 1;
-        if (cls == TileBoxClass::Crossing ||
-            (cls == TileBoxClass::Front && silhouetteMeets(t, c.x0, c.y0, c.x1, c.y1))) {
-          boundary[i] = 1;
-        } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
-          sample[i] += contribution;
-        }
-      }
+  // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
+  // outside the volume, so every surface pixel of the bin tile has one count, the sample's
+  // (section 4.3's argument for a tile, made for the bin tile; z-pass's open silhouette edges
+  // made their quads Crossing above). Each tile a rect reaches is decided with that count, as
+  // the tile-by-tile walk below would decide it: its classes would all be inherited, and its
+  // samples would find the same count. One walk over the rects instead of one per tile.
+  if (!per_pixel_only && !any_crossing) {
+    const Cell& s = tile.sampleCell();
+    uint64_t reached = 0;
+    int32_t count = 0;
+    for (const Rect& r : rects) {
+      reached |= tile.cellMask(r.e);
+      if (r.whole == counted && coversPixel(*r.t, s.sample_x, s.sample_y))
+        count += drawn(*r.t).contribution;
+    }
+    reached &= tile.surfaceMask();
+    const uint64_t cells = uint64_t(std::popcount(reached));
+    if (count == 0) {
+      work.lit += cells;
+      return;
+    }
+    work.shadowed += cells;
+    work.writes += cells;  // the per-tile counts
+    for (; reached != 0; reached &= reached - 1) coarse[std::countr_zero(reached)] += count;
+    return;
   }
-  bool any_boundary = per_pixel_only, any_decided = false;
-  for (int i = 0; i < n * n && !per_pixel_only; ++i) {
-    if (!touched[i]) continue;
-    any_decided |= !boundary[i];
-    if (boundary[i]) {
-      ++work.boundary;
-      any_boundary = true;
-    } else if (sample[i] != 0) {
+  // Tile by tile: the rects crossing the bin tile's box are tested per tile (a tile found a
+  // boundary tile by an earlier rect is not tested again); the others take their class over
+  // every tile they reach. Cells as bits (BinTile::cellMask).
+  const uint64_t surface = tile.surfaceMask();
+  uint64_t touched = 0, boundary = 0;
+  for (const Rect& r : rects) {
+    const uint64_t reached = tile.cellMask(r.e) & surface;
+    if (r.whole != TileBoxClass::Crossing) {
+      touched |= reached;
+      continue;
+    }
+    const SetupTriangle& t = *r.t;
+    const int32_t contribution = drawn(t).contribution;
+    for (uint64_t m = reached & ~boundary; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      const Cell& c = tile.cell(i % n, i / n);
+      ++work.tally.tested;
+      const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
+      if (cls == TileBoxClass::Outside) {
+        ++work.tally.culled;
+        continue;
+      }
+      touched |= uint64_t(1) << i;
+      if (cls == TileBoxClass::Crossing ||
+          (cls == TileBoxClass::Front && silhouetteMeets(t, c.x0, c.y0, c.x1, c.y1))) {
+        boundary |= uint64_t(1) << i;
+      } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
+        sample[i] += contribution;
+      }
+    }
+  }
+  // The samples of the rects counted over every tile they reach, now that the tiles left to
+  // decide are known.
+  const uint64_t decided = touched & ~boundary;
+  for (const Rect& r : rects) {
+    if (r.whole != counted) continue;
+    const int32_t contribution = drawn(*r.t).contribution;
+    for (uint64_t m = tile.cellMask(r.e) & decided; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      const Cell& c = tile.cell(i % n, i / n);
+      if (coversPixel(*r.t, c.sample_x, c.sample_y)) sample[i] += contribution;
+    }
+  }
+  work.boundary += uint64_t(std::popcount(boundary));
+  for (uint64_t m = decided; m != 0; m &= m - 1) {
+    const int i = std::countr_zero(m);
+    if (sample[i] != 0) {
       ++work.shadowed;
       ++work.writes;  // the per-tile count
       coarse[i] += sample[i];
@@ -290,6 +347,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
       ++work.lit;
     }
   }
+  const bool any_boundary = per_pixel_only || boundary != 0, any_decided = decided != 0;
   if (!any_boundary) return;
   // The boundary tiles drawn per pixel as the per-pixel passes draw (rasterizer.cpp): the
   // depth-rule test per tile from its z-min and z-max culls the tiles no pixel of which can
@@ -308,30 +366,13 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // one per tile); outside the boundary tiles it covers no pixel with a surface
     // (classifyTileBox found it Outside there, or the tile holds only background). Otherwise
     // tile by tile, skipping the decided ones.
-    int level = kBinTileLevel;
-    if (any_decided) {
-      int cx0, cy0, cx1, cy1;
-      tile.cellRange(e, cx0, cy0, cx1, cy1);
-      for (int cy = cy0; cy <= cy1 && level == kBinTileLevel; ++cy)
-        for (int cx = cx0; cx <= cx1; ++cx)
-          if (touched[cy * n + cx] && !boundary[cy * n + cx]) {
-            level = tile.level();
-            break;
-          }
-    }
-    const bool skip_decided = level != kBinTileLevel;
+    const bool skip_decided = any_decided && (tile.cellMask(e) & decided) != 0;
+    const int level = skip_decided ? tile.level() : kBinTileLevel;
     const Drawn d = drawn(t);
     forEachCullRect(
         t, e, depth, level,
         [&](const TileEdges& sub, float zmin, float zmax) {
-          if (skip_decided) {
-            int cx0, cy0, cx1, cy1;
-            tile.cellRange(sub, cx0, cy0, cx1, cy1);
-            bool any = false;
-            for (int cy = cy0; cy <= cy1 && !any; ++cy)
-              for (int cx = cx0; cx <= cx1 && !any; ++cx) any = boundary[cy * n + cx] != 0;
-            if (!any) return 0;
-          }
+          if (skip_decided && (tile.cellMask(sub) & boundary) == 0) return 0;
           if (near_test && zmin > bound_hi) return 0;  // the depth bounds test, as below
           if (zfail && zmax < bound_lo) return 0;
           switch (depthRuleTiles(t, sub, zfail, zmin, zmax, true)) {
@@ -366,7 +407,6 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // found (a volume reaching only background here draws nothing); the triangles before it are
   // then drawn first (the stencil is a sum: the order does not matter).
   bool marked = false;
-  int unmarked = tile.surfaceCells();  // once 0, no rect can mark another
   const uint32_t* pending = first;  // triangles before it are drawn
   for (const uint32_t* k = first; k != last; ++k) {
     if (last - k > ptrdiff_t(kBinLookahead))
@@ -374,17 +414,12 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
     if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-    int cx0, cy0, cx1, cy1;
-    tile.cellRange(e, cx0, cy0, cx1, cy1);
-    for (int cy = cy0; cy <= cy1 && unmarked > 0; ++cy)
-      for (int cx = cx0; cx <= cx1; ++cx) {
-        const int i = cy * n + cx;
-        if (!tile.cell(cx, cy).surface || boundary[i]) continue;
-        boundary[i] = 1;
-        ++work.boundary;
-        --unmarked;
-        marked = true;
-      }
+    const uint64_t fresh = tile.cellMask(e) & surface & ~boundary;
+    if (fresh != 0) {
+      boundary |= fresh;
+      work.boundary += uint64_t(std::popcount(fresh));
+      marked = true;
+    }
     if (!marked) continue;
     for (; pending != k; ++pending) {
       const SetupTriangle& p = set.triangles[*pending];
@@ -440,18 +475,19 @@ bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
       const int32_t sum = coarse[cy * n + cx];
       if (sum == 0) continue;
       const Cell& c = tile.cell(cx, cy);
-      uint64_t writes = 0;
+      const int x0 = c.x0 - box.x0, x1 = c.x1 - box.x0;
+      const bool all_surface = c.surface_pixels == (x1 - x0 + 1) * (c.y1 - c.y0 + 1);
       for (int y = c.y0; y <= c.y1; ++y) {
         const size_t row = size_t(y - box.y0) * kBinTileSize;
         const float* d = tile_depth + row;
         int32_t* s = tile_stencil + row;
-        for (int i = c.x0 - box.x0; i <= c.x1 - box.x0; ++i) {
-          const int32_t surface = d[i] <= 0.0f ? 0 : 1;
-          s[i] += sum * surface;
-          writes += uint64_t(surface);
+        if (all_surface) {
+          for (int i = x0; i <= x1; ++i) s[i] += sum;
+        } else {
+          for (int i = x0; i <= x1; ++i) s[i] += d[i] > 0.0f ? sum : 0;
         }
       }
-      w.writes += writes;
+      w.writes += uint64_t(c.surface_pixels);
     }
   return true;
 }
