@@ -44,6 +44,7 @@ class BinTile {
   BinTile(const TileBox& box, const DepthBuffer& depth, int level, const float* tile_depth,
           bool surface_ranges, TileWork& work)
       : box_(box), level_(level), per_row_(kBinTileSize >> level) {
+    for (int k = 1; k <= per_row_; ++k) rows_[k] = rows_[k - 1] | uint64_t(1) << ((k - 1) * per_row_);
     const TileDepthRange& range = depth.tileRange(level);
     const int size = 1 << level;
     for (int cy = 0; cy < per_row_; ++cy)
@@ -111,21 +112,23 @@ class BinTile {
     cy0 = (e.y0 - box_.y0) >> level_;
     cy1 = (e.y1 - box_.y0) >> level_;
   }
-  // The cells the rect's pixels touch, as bits of surfaceMask()'s layout.
-  uint64_t cellMask(const TileEdges& e) const {
-    int cx0, cy0, cx1, cy1;
-    cellRange(e, cx0, cy0, cx1, cy1);
-    const uint64_t row = ((uint64_t(1) << (cx1 - cx0 + 1)) - 1) << cx0;
-    uint64_t mask = 0;
-    for (int cy = cy0; cy <= cy1; ++cy) mask |= row << (cy * per_row_);
-    return mask;
+  // The cells pixels [x0, x1] x [y0, y1] of the bin tile touch, as bits of surfaceMask()'s
+  // layout: the row's bits repeated down the rows by one multiplication (rows_[k] has bit
+  // j * perRow() set for every row j < k; the rows' bits do not overlap, so nothing carries).
+  uint64_t cellMask(int x0, int y0, int x1, int y1) const {
+    const int cx0 = (x0 - box_.x0) >> level_, cx1 = (x1 - box_.x0) >> level_;
+    const int cy0 = (y0 - box_.y0) >> level_, cy1 = (y1 - box_.y0) >> level_;
+    const uint64_t row = ((uint64_t(2) << cx1) - 1) & ~((uint64_t(1) << cx0) - 1);
+    return row * (rows_[cy1 + 1] - rows_[cy0]);
   }
+  uint64_t cellMask(const TileEdges& e) const { return cellMask(e.x0, e.y0, e.x1, e.y1); }
 
  private:
   TileBox box_;
   int level_, per_row_;
   bool any_surface_ = false;
   uint64_t surface_mask_ = 0;
+  uint64_t rows_[kBinTileSize / 4 + 1] = {};
   const Cell* sample_ = nullptr;
   float zmin_ = 1.0f, zmax_ = 0.0f;
   Cell cells_[kMaxCells];
@@ -225,8 +228,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   if (((!zfail || !set.may_contain_eye[v]) && tile.zmin() > set.depth_max[v]) ||
       (zfail && tile.zmax() < set.depth_min[v]))
     return;
-  int32_t sample[kMaxCells] = {};
   const TileBox& box = tile.box();
+  const uint64_t surface = tile.surfaceMask();
   // The triangles' rects set up here, with their class against the bin tile's box, kept for
   // the tile walk and the drawing below (one buffer per thread).
   struct Rect {
@@ -236,119 +239,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   };
   thread_local std::vector<Rect> rects;
   rects.clear();
-  // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes where
-  // the quad is counted (Front): such a tile is decided per pixel.
-  auto silhouetteMeets = [&](const SetupTriangle& t, int x0, int y0, int x1, int y1) {
-    return !zfail && t.owners[0] != ClipTriangles::kNoOwner &&
-           segmentMeetsTile(set.silhouettes[t.owners[0]], x0, y0, x1, y1);
-  };
-  // Each triangle first against the box of its whole rect's pixels and the bin tile's surface
-  // range: each smaller tile's box lies inside it, so an answer other than Crossing holds for
-  // every tile of the rect (which is then classified without a test of its own: the sample
-  // decides).
-  bool any_crossing = false;
-  for (const uint32_t* k = first; k != last && !per_pixel_only; ++k) {
-    if (last - k > ptrdiff_t(kBinLookahead))
-      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
-    const SetupTriangle& t = set.triangles[*k];
-    TileEdges e;
-    // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
-    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-    ++work.tally.tested;
-    TileBoxClass whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
-    // The count changes across a silhouette edge on both of its sides, beyond the rect of the
-    // quad that holds it: the edge is tested against the whole bin tile.
-    if (whole == TileBoxClass::Front && silhouetteMeets(t, box.x0, box.y0, box.x1, box.y1))
-      whole = TileBoxClass::Crossing;  // decide tile by tile
-    if (whole == TileBoxClass::Outside) {
-      ++work.tally.culled;
-      continue;  // no pixel centre of the bin tile under it
-    }
-    any_crossing |= whole == TileBoxClass::Crossing;
-    rects.push_back({&t, e, whole});
-  }
-  // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
-  // outside the volume, so every surface pixel of the bin tile has one count, the sample's
-  // (section 4.3's argument for a tile, made for the bin tile; z-pass's open silhouette edges
-  // made their quads Crossing above). Each tile a rect reaches is decided with that count, as
-  // the tile-by-tile walk below would decide it: its classes would all be inherited, and its
-  // samples would find the same count. One walk over the rects instead of one per tile.
-  if (!per_pixel_only && !any_crossing) {
-    const Cell& s = tile.sampleCell();
-    uint64_t reached = 0;
-    int32_t count = 0;
-    for (const Rect& r : rects) {
-      reached |= tile.cellMask(r.e);
-      if (r.whole == counted && coversPixel(*r.t, s.sample_x, s.sample_y))
-        count += drawn(*r.t).contribution;
-    }
-    reached &= tile.surfaceMask();
-    const uint64_t cells = uint64_t(std::popcount(reached));
-    if (count == 0) {
-      work.lit += cells;
-      return;
-    }
-    work.shadowed += cells;
-    work.writes += cells;  // the per-tile counts
-    for (; reached != 0; reached &= reached - 1) coarse[std::countr_zero(reached)] += count;
-    return;
-  }
-  // Tile by tile: the rects crossing the bin tile's box are tested per tile (a tile found a
-  // boundary tile by an earlier rect is not tested again); the others take their class over
-  // every tile they reach. Cells as bits (BinTile::cellMask).
-  const uint64_t surface = tile.surfaceMask();
-  uint64_t touched = 0, boundary = 0;
-  for (const Rect& r : rects) {
-    const uint64_t reached = tile.cellMask(r.e) & surface;
-    if (r.whole != TileBoxClass::Crossing) {
-      touched |= reached;
-      continue;
-    }
-    const SetupTriangle& t = *r.t;
-    const int32_t contribution = drawn(t).contribution;
-    for (uint64_t m = reached & ~boundary; m != 0; m &= m - 1) {
-      const int i = std::countr_zero(m);
-      const Cell& c = tile.cell(i % n, i / n);
-      ++work.tally.tested;
-      const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
-      if (cls == TileBoxClass::Outside) {
-        ++work.tally.culled;
-        continue;
-      }
-      touched |= uint64_t(1) << i;
-      if (cls == TileBoxClass::Crossing ||
-          (cls == TileBoxClass::Front && silhouetteMeets(t, c.x0, c.y0, c.x1, c.y1))) {
-        boundary |= uint64_t(1) << i;
-      } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
-        sample[i] += contribution;
-      }
-    }
-  }
-  // The samples of the rects counted over every tile they reach, now that the tiles left to
-  // decide are known.
-  const uint64_t decided = touched & ~boundary;
-  for (const Rect& r : rects) {
-    if (r.whole != counted) continue;
-    const int32_t contribution = drawn(*r.t).contribution;
-    for (uint64_t m = tile.cellMask(r.e) & decided; m != 0; m &= m - 1) {
-      const int i = std::countr_zero(m);
-      const Cell& c = tile.cell(i % n, i / n);
-      if (coversPixel(*r.t, c.sample_x, c.sample_y)) sample[i] += contribution;
-    }
-  }
-  work.boundary += uint64_t(std::popcount(boundary));
-  for (uint64_t m = decided; m != 0; m &= m - 1) {
-    const int i = std::countr_zero(m);
-    if (sample[i] != 0) {
-      ++work.shadowed;
-      ++work.writes;  // the per-tile count
-      coarse[i] += sample[i];
-    } else {
-      ++work.lit;
-    }
-  }
-  const bool any_boundary = per_pixel_only || boundary != 0, any_decided = decided != 0;
-  if (!any_boundary) return;
+  // Tiles as bits (BinTile::cellMask): those drawn per pixel, and those decided by a sample.
+  uint64_t boundary = 0, decided = 0;
   // The boundary tiles drawn per pixel as the per-pixel passes draw (rasterizer.cpp): the
   // depth-rule test per tile from its z-min and z-max culls the tiles no pixel of which can
   // pass, and a polygon covering a whole tile and passing at every pixel of it adds to the
@@ -357,16 +249,13 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // Boundary tiles also take the depth bounds test (drawDepthBounded).
   const float bound_lo = set.depth_min[v], bound_hi = set.depth_max[v];
   const bool near_test = !zfail || !set.may_contain_eye[v];
-  // With every tile the volume reaches a boundary tile, its triangles are drawn over their
-  // whole rects, tested per bin tile as the per-pixel passes do: outside the touched tiles
-  // they cover no pixel with a surface (classifyTileBox found them Outside there).
   auto draw = [&](const SetupTriangle& t, TileEdges& e) {
     // A triangle whose rect reaches no decided tile is drawn over its whole rect, tested per
     // bin tile as the per-pixel passes do (one depth-rule test and one kernel call instead of
     // one per tile); outside the boundary tiles it covers no pixel with a surface
     // (classifyTileBox found it Outside there, or the tile holds only background). Otherwise
     // tile by tile, skipping the decided ones.
-    const bool skip_decided = any_decided && (tile.cellMask(e) & decided) != 0;
+    const bool skip_decided = (tile.cellMask(e) & decided) != 0;
     const int level = skip_decided ? tile.level() : kBinTileLevel;
     const Drawn d = drawn(t);
     forEachCullRect(
@@ -398,37 +287,145 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         },
         work.tally, kWhole);
   };
-  if (!per_pixel_only) {
-    for (Rect& r : rects) draw(*r.t, r.e);
+  if (per_pixel_only) {
+    // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach (from
+    // their bounding boxes, as setupTileRect clips them). A volume that reaches only
+    // background here draws nothing.
+    uint64_t reached = 0;
+    for (const uint32_t* k = first; k != last; ++k) {
+      const SetupTriangle& t = set.triangles[*k];
+      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
+      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
+      if (x0 <= x1 && y0 <= y1) reached |= tile.cellMask(x0, y0, x1, y1);
+    }
+    boundary = reached & surface;
+    if (boundary == 0) return;
+    work.boundary += uint64_t(std::popcount(boundary));
+    for (const uint32_t* k = first; k != last; ++k) {
+      if (last - k > ptrdiff_t(kBinLookahead))
+        prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
+      const SetupTriangle& t = set.triangles[*k];
+      TileEdges e;
+      if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) draw(t, e);
+    }
     return;
-  }
-  // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach, marked
-  // in the same walk as the drawing. As with classification, nothing is drawn until one is
-  // found (a volume reaching only background here draws nothing); the triangles before it are
-  // then drawn first (the stencil is a sum: the order does not matter).
-  bool marked = false;
-  const uint32_t* pending = first;  // triangles before it are drawn
-  for (const uint32_t* k = first; k != last; ++k) {
-    if (last - k > ptrdiff_t(kBinLookahead))
-      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
-    const SetupTriangle& t = set.triangles[*k];
-    TileEdges e;
-    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-    const uint64_t fresh = tile.cellMask(e) & surface & ~boundary;
-    if (fresh != 0) {
-      boundary |= fresh;
-      work.boundary += uint64_t(std::popcount(fresh));
-      marked = true;
+  } else {
+    // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes
+    // where the quad is counted (Front): such a tile is decided per pixel.
+    auto silhouetteMeets = [&](const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+      return !zfail && t.owners[0] != ClipTriangles::kNoOwner &&
+             segmentMeetsTile(set.silhouettes[t.owners[0]], x0, y0, x1, y1);
+    };
+    // Each triangle first against the box of its whole rect's pixels and the bin tile's
+    // surface range: each smaller tile's box lies inside it, so an answer other than Crossing
+    // holds for every tile of the rect (which is then classified without a test of its own:
+    // the sample decides).
+    bool any_crossing = false;
+    for (const uint32_t* k = first; k != last; ++k) {
+      if (last - k > ptrdiff_t(kBinLookahead))
+        prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
+      const SetupTriangle& t = set.triangles[*k];
+      TileEdges e;
+      // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
+      if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+      ++work.tally.tested;
+      TileBoxClass whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
+      // The count changes across a silhouette edge on both of its sides, beyond the rect of
+      // the quad that holds it: the edge is tested against the whole bin tile.
+      if (whole == TileBoxClass::Front && silhouetteMeets(t, box.x0, box.y0, box.x1, box.y1))
+        whole = TileBoxClass::Crossing;  // decide tile by tile
+      if (whole == TileBoxClass::Outside) {
+        ++work.tally.culled;
+        continue;  // no pixel centre of the bin tile under it
+      }
+      any_crossing |= whole == TileBoxClass::Crossing;
+      rects.push_back({&t, e, whole});
     }
-    if (!marked) continue;
-    for (; pending != k; ++pending) {
-      const SetupTriangle& p = set.triangles[*pending];
-      TileEdges pe;
-      if (setupTileRect(p, box.x0, box.y0, box.x1, box.y1, pe)) draw(p, pe);
+    // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
+    // outside the volume, so every surface pixel of the bin tile has one count, the sample's
+    // (section 4.3's argument for a tile, made for the bin tile; z-pass's open silhouette
+    // edges made their quads Crossing above). Each tile a rect reaches is decided with that
+    // count, as the tile-by-tile walk below would decide it: its classes would all be
+    // inherited, and its samples would find the same count. One walk over the rects instead
+    // of one per tile.
+    if (!any_crossing) {
+      const Cell& s = tile.sampleCell();
+      uint64_t reached = 0;
+      int32_t count = 0;
+      for (const Rect& r : rects) {
+        reached |= tile.cellMask(r.e);
+        if (r.whole == counted && coversPixel(*r.t, s.sample_x, s.sample_y))
+          count += drawn(*r.t).contribution;
+      }
+      reached &= surface;
+      const uint64_t cells = uint64_t(std::popcount(reached));
+      if (count == 0) {
+        work.lit += cells;
+        return;
+      }
+      work.shadowed += cells;
+      work.writes += cells;  // the per-tile counts
+      for (; reached != 0; reached &= reached - 1) coarse[std::countr_zero(reached)] += count;
+      return;
     }
-    pending = k + 1;
-    draw(t, e);
+    // Tile by tile: the rects crossing the bin tile's box are tested per tile (a tile found a
+    // boundary tile by an earlier rect is not tested again); the others take their class over
+    // every tile they reach.
+    int32_t sample[kMaxCells];
+    std::fill_n(sample, n * n, 0);
+    uint64_t touched = 0;
+    for (const Rect& r : rects) {
+      const uint64_t reached = tile.cellMask(r.e) & surface;
+      if (r.whole != TileBoxClass::Crossing) {
+        touched |= reached;
+        continue;
+      }
+      const SetupTriangle& t = *r.t;
+      const int32_t contribution = drawn(t).contribution;
+      for (uint64_t m = reached & ~boundary; m != 0; m &= m - 1) {
+        const int i = std::countr_zero(m);
+        const Cell& c = tile.cell(i % n, i / n);
+        ++work.tally.tested;
+        const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
+        if (cls == TileBoxClass::Outside) {
+          ++work.tally.culled;
+          continue;
+        }
+        touched |= uint64_t(1) << i;
+        if (cls == TileBoxClass::Crossing ||
+            (cls == TileBoxClass::Front && silhouetteMeets(t, c.x0, c.y0, c.x1, c.y1))) {
+          boundary |= uint64_t(1) << i;
+        } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
+          sample[i] += contribution;
+        }
+      }
+    }
+    // The samples of the rects counted over every tile they reach, now that the tiles left to
+    // decide are known.
+    decided = touched & ~boundary;
+    for (const Rect& r : rects) {
+      if (r.whole != counted) continue;
+      const int32_t contribution = drawn(*r.t).contribution;
+      for (uint64_t m = tile.cellMask(r.e) & decided; m != 0; m &= m - 1) {
+        const int i = std::countr_zero(m);
+        const Cell& c = tile.cell(i % n, i / n);
+        if (coversPixel(*r.t, c.sample_x, c.sample_y)) sample[i] += contribution;
+      }
+    }
+    work.boundary += uint64_t(std::popcount(boundary));
+    for (uint64_t m = decided; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      if (sample[i] != 0) {
+        ++work.shadowed;
+        ++work.writes;  // the per-tile count
+        coarse[i] += sample[i];
+      } else {
+        ++work.lit;
+      }
+    }
+    if (boundary == 0) return;
   }
+  for (Rect& r : rects) draw(*r.t, r.e);
 }
 
 TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
