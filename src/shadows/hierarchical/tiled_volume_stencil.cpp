@@ -289,25 +289,31 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   };
   if (per_pixel_only) {
     // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach (from
-    // their bounding boxes, as setupTileRect clips them). A volume that reaches only
-    // background here draws nothing.
+    // their bounding boxes, as setupTileRect clips them). Nothing is drawn until a triangle
+    // reaches one (a volume over only background here draws nothing); the triangles before it
+    // are then drawn first (the stencil is a sum: the order does not matter).
     uint64_t reached = 0;
-    for (const uint32_t* k = first; k != last; ++k) {
-      const SetupTriangle& t = set.triangles[*k];
-      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
-      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
-      if (x0 <= x1 && y0 <= y1) reached |= tile.cellMask(x0, y0, x1, y1);
-    }
-    boundary = reached & surface;
-    if (boundary == 0) return;
-    work.boundary += uint64_t(std::popcount(boundary));
+    const uint32_t* pending = first;  // the triangles before it are drawn
     for (const uint32_t* k = first; k != last; ++k) {
       if (last - k > ptrdiff_t(kBinLookahead))
         prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
       const SetupTriangle& t = set.triangles[*k];
+      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
+      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
+      if (x0 > x1 || y0 > y1) continue;
+      reached |= tile.cellMask(x0, y0, x1, y1);
+      if ((reached & surface) == 0) continue;
+      for (; pending != k; ++pending) {
+        const SetupTriangle& p = set.triangles[*pending];
+        TileEdges e;
+        if (setupTileRect(p, box.x0, box.y0, box.x1, box.y1, e)) draw(p, e);
+      }
+      pending = k + 1;
       TileEdges e;
       if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) draw(t, e);
     }
+    boundary = reached & surface;
+    work.boundary += uint64_t(std::popcount(boundary));
     return;
   } else {
     // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes
