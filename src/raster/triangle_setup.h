@@ -43,20 +43,38 @@ struct ClipTriangles {
     return first;
   }
   vec4* ownVertex(uint32_t i) { return clip.data() + (i - shared_count); }
+  // Element by element: a range insert of an initializer list costs a call and a copy loop
+  // per triangle, which shows in the profile of a pass adding tens of thousands of polygons.
   void add(uint32_t i0, uint32_t i1, uint32_t i2, int32_t value, uint8_t flag = 0) {
-    indices.insert(indices.end(), {i0, i1, i2});
+    indices.push_back(i0);
+    indices.push_back(i1);
+    indices.push_back(i2);
     payload.push_back(value);
     flags.push_back(flag);
-    if (!owners.empty()) owners.insert(owners.end(), {kNoOwner, kNoOwner});
+    if (!owners.empty()) {
+      owners.push_back(kNoOwner);
+      owners.push_back(kNoOwner);
+    }
   }
   // As add, with the two owners (either may be kNoOwner).
   void addOwned(uint32_t i0, uint32_t i1, uint32_t i2, int32_t value, uint8_t flag,
                 uint32_t owner0, uint32_t owner1) {
     if (owners.empty()) owners.assign(2 * payload.size(), kNoOwner);
-    indices.insert(indices.end(), {i0, i1, i2});
+    indices.push_back(i0);
+    indices.push_back(i1);
+    indices.push_back(i2);
     payload.push_back(value);
     flags.push_back(flag);
-    owners.insert(owners.end(), {owner0, owner1});
+    owners.push_back(owner0);
+    owners.push_back(owner1);
+  }
+  // Room for `triangles` more triangles (with owners) and `vertices` more own vertices.
+  void reserve(size_t triangles, size_t vertices) {
+    indices.reserve(indices.size() + 3 * triangles);
+    payload.reserve(payload.size() + triangles);
+    flags.reserve(flags.size() + triangles);
+    owners.reserve(owners.size() + 2 * triangles);
+    clip.reserve(clip.size() + vertices);
   }
 
   static constexpr uint32_t kNoOwner = 0xffffffffu;  // = kNoPrimitive (depth_buffer.h)

@@ -37,10 +37,23 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
   const size_t meshes = scene.meshes.size();
   set.zfail.resize(meshes);
   set.may_contain_eye.resize(meshes);
+  // Every caster's silhouette first, so that the polygon lists grow once.
+  std::vector<CasterVolume> casters;
+  casters.reserve(meshes);
+  size_t triangle_room = 0, vertex_room = 0;
+  for (size_t m = 0; m < meshes; ++m) {
+    casters.push_back(casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto));
+    const CasterVolume& volume = casters.back();
+    triangle_room += 2 * volume.silhouette.edges.size();
+    if (volume.zfail) {
+      for (const int8_t o : volume.silhouette.orientation) triangle_room += o != 0 ? 2 : 0;
+    }
+    vertex_room += scene.meshes[m].positions.size();
+  }
+  polygons.reserve(triangle_room, vertex_room);
   for (size_t m = 0; m < meshes; ++m) {
     const Mesh& mesh = scene.meshes[m];
-    CasterVolume volume =
-        casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto);
+    CasterVolume& volume = casters[m];
     stats.silhouette_edges += volume.silhouette.edges.size();
     // The same polygons, in the same order and vertex order, as the per-pixel stencil's
     // (shadow_stencil.cpp), so every pixel a volume polygon reaches gets bit-identical edge
@@ -49,9 +62,17 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
     const uint32_t finite = volume.finite, infinite = volume.infinite;
     const uint8_t flags = volume.zfail ? kZFail : 0;
     const uint32_t tag = uint32_t(m);
-    for (const SilhouetteEdge& e : volume.silhouette.edges) {
+    const std::vector<SilhouetteEdge>& edges = volume.silhouette.edges;
+    for (size_t i = 0; i < edges.size(); ++i) {
+      const SilhouetteEdge& e = edges[i];
       uint32_t segment = ClipTriangles::kNoOwner;
       if (!volume.zfail) {
+        // The edges' vertices lie anywhere in the eye pass's vertex array: asked for ahead.
+        constexpr size_t kAhead = 8;
+        if (i + kAhead < edges.size()) {
+          __builtin_prefetch(&eye.clip_vertices[finite + edges[i + kAhead].v0]);
+          __builtin_prefetch(&eye.clip_vertices[finite + edges[i + kAhead].v1]);
+        }
         segment = uint32_t(set.silhouettes.size());
         set.silhouettes.push_back(screenSegment(eye.clip_vertices[finite + e.v1],
                                                 eye.clip_vertices[finite + e.v0], view));
