@@ -302,29 +302,27 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work.tally, kWhole);
   };
   if (per_pixel_only) {
-    // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach (from
-    // their bounding boxes, as setupTileRect clips them). Nothing is drawn until a triangle
-    // reaches one (a volume over only background here draws nothing); the triangles before it
-    // are then drawn first (the stencil is a sum: the order does not matter).
+    // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach.
+    // Nothing is drawn until a triangle reaches one (a volume over only background here draws
+    // nothing); the triangles before it are then drawn first (the stencil is a sum: the order
+    // does not matter).
     uint64_t reached = 0;
     const uint32_t* pending = first;  // the triangles before it are drawn
     for (const uint32_t* k = first; k != last; ++k) {
       if (last - k > ptrdiff_t(kBinLookahead))
         prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
       const SetupTriangle& t = set.triangles[*k];
-      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
-      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
-      if (x0 > x1 || y0 > y1) continue;
-      reached |= tile.cellMask(x0, y0, x1, y1);
+      TileEdges e;
+      if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+      reached |= tile.cellMask(e);
       if ((reached & surface) == 0) continue;
       for (; pending != k; ++pending) {
         const SetupTriangle& p = set.triangles[*pending];
-        TileEdges e;
-        if (setupTileRect(p, box.x0, box.y0, box.x1, box.y1, e)) draw(p, e);
+        TileEdges pe;
+        if (setupTileRect(p, box.x0, box.y0, box.x1, box.y1, pe)) draw(p, pe);
       }
       pending = k + 1;
-      TileEdges e;
-      if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) draw(t, e);
+      draw(t, e);
     }
     boundary = reached & surface;
     work.boundary += uint64_t(std::popcount(boundary));
