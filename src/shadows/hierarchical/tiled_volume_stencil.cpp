@@ -469,12 +469,13 @@ bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
   const BinTile tile(box, depth, options.tile_level, tile_depth, hierarchical, w);
   if (!tile.anySurface()) return false;  // only background: the stencil stays 0
   int32_t coarse[kMaxCells] = {};
-  // The bin's triangles are in increasing order, so each volume's are one run.
-  size_t v = 0;
+  // The bin's triangles are in increasing order, so each volume's are one run, found by binary
+  // search (a dense volume's run holds hundreds of triangles, a scene may hold thousands of
+  // volumes).
   while (first != last) {
-    while (*first >= set.begin[v + 1]) ++v;
-    const uint32_t* end = first;
-    while (end != last && *end < set.begin[v + 1]) ++end;
+    const size_t v =
+        size_t(std::upper_bound(set.begin.begin(), set.begin.end(), *first) - set.begin.begin()) - 1;
+    const uint32_t* end = std::lower_bound(first, last, set.begin[v + 1]);
     if (hierarchical)
       drawHierarchical(set, v, first, end, tile, depth, target, options, coarse, w);
     else
