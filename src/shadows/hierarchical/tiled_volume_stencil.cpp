@@ -220,7 +220,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   const bool zfail = set.zfail[v] != 0;
   const int n = tile.perRow();
   // A volume dense here is drawn per pixel (TiledVolumeStencilOptions::dense_limit).
-  const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * n * n;
+  constexpr ptrdiff_t kAreas = (kBinTileSize / 8) * (kBinTileSize / 8);  // 8x8 areas per bin tile
+  const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * kAreas;
   const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;
   const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
   // The depth bounds test for the whole bin tile first (drawDepthBounded): surfaces all nearer
@@ -384,6 +385,14 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
       work.shadowed += cells;
       work.writes += cells;  // the per-tile counts
       for (; reached != 0; reached &= reached - 1) coarse[std::countr_zero(reached)] += count;
+      return;
+    }
+    if (tile.level() == kBinTileLevel) {
+      // Tiles as large as the bin tile: the one tile's box is the box just tested, so a
+      // triangle crossing it crosses the tile, and the tile is a boundary tile.
+      boundary = surface;
+      work.boundary += uint64_t(std::popcount(boundary));
+      for (Rect& r : rects) draw(*r.t, r.e);
       return;
     }
     // Tile by tile: the rects crossing the bin tile's box are tested per tile (a tile found a

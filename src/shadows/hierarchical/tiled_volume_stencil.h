@@ -17,7 +17,9 @@
 //   from the triangles wholly in front of the box (z-pass) or wholly behind it (z-fail), by
 //   coverage alone, and the result goes to a per-tile count (the coarse level of the two-level
 //   stencil of section 4.3) that is added to the tile's surface pixels once. Only boundary
-//   tiles are drawn per pixel.
+//   tiles are drawn per pixel. The thesis's argument holds for any box, so the volume is
+//   tested against the 32x32 bin tile's box first: when no triangle crosses it, one sample
+//   decides the whole bin tile, and its tiles are classified only when some triangle does.
 #include "core/image.h"
 #include "core/stats.h"
 #include "raster/depth_buffer.h"
@@ -30,12 +32,16 @@ enum class VolumeCulling { DepthBounds, Hierarchical };
 
 struct TiledVolumeStencilOptions {
   VolumeCulling culling = VolumeCulling::Hierarchical;
-  int tile_level = 3;  // tiles of 2^tile_level pixels, 2..5 (4x4 to the 32x32 bin tiles)
-  // Hierarchical: a volume with more than dense_limit triangles per tile in a bin tile is drawn
-  // per pixel there without classifying its tiles (0: always classified, the thesis's way). A
-  // volume of many small polygons (a finely tessellated caster's silhouette) crosses nearly
-  // every tile it reaches, and testing each (triangle, tile) pair costs more than the pixels
-  // it could save. The stencil is the same either way.
+  // Tiles of 2^tile_level pixels, 2..5 (4x4 to the 32x32 bin tiles). 3, the thesis's 8x8, is
+  // this struct's default; the `hierarchical-volume` technique's is 5 (hierarchical_technique.cpp
+  // says why).
+  int tile_level = 3;
+  // Hierarchical: a volume with more than dense_limit triangles per 8x8 pixels of a bin tile
+  // (16 x dense_limit in a 32x32 bin tile, whatever the tile size) is drawn per pixel there
+  // without classifying its tiles (0: always classified, the thesis's way). A volume of many
+  // small polygons (a finely tessellated caster's silhouette) crosses nearly every tile it
+  // reaches, and testing each (triangle, tile) pair costs more than the pixels it could save.
+  // The stencil is the same either way.
   int dense_limit = 2;
   bool simd = true;
 };
