@@ -1,7 +1,9 @@
 #include "shadows/hierarchical/volume_set.h"
 
 #include <algorithm>
+#include <array>
 
+#include "core/parallel.h"
 #include "core/timer.h"
 #include "shadows/caster_volume.h"
 
@@ -51,6 +53,8 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
     vertex_room += scene.meshes[m].positions.size();
   }
   polygons.reserve(triangle_room, vertex_room);
+  // The z-pass silhouette edges' ends (eye-pass vertices), projected after the loop.
+  std::vector<std::array<uint32_t, 2>> segment_ends;
   for (size_t m = 0; m < meshes; ++m) {
     const Mesh& mesh = scene.meshes[m];
     CasterVolume& volume = casters[m];
@@ -62,20 +66,11 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
     const uint32_t finite = volume.finite, infinite = volume.infinite;
     const uint8_t flags = volume.zfail ? kZFail : 0;
     const uint32_t tag = uint32_t(m);
-    const std::vector<SilhouetteEdge>& edges = volume.silhouette.edges;
-    for (size_t i = 0; i < edges.size(); ++i) {
-      const SilhouetteEdge& e = edges[i];
+    for (const SilhouetteEdge& e : volume.silhouette.edges) {
       uint32_t segment = ClipTriangles::kNoOwner;
       if (!volume.zfail) {
-        // The edges' vertices lie anywhere in the eye pass's vertex array: asked for ahead.
-        constexpr size_t kAhead = 8;
-        if (i + kAhead < edges.size()) {
-          __builtin_prefetch(&eye.clip_vertices[finite + edges[i + kAhead].v0]);
-          __builtin_prefetch(&eye.clip_vertices[finite + edges[i + kAhead].v1]);
-        }
-        segment = uint32_t(set.silhouettes.size());
-        set.silhouettes.push_back(screenSegment(eye.clip_vertices[finite + e.v1],
-                                                eye.clip_vertices[finite + e.v0], view));
+        segment = uint32_t(segment_ends.size());
+        segment_ends.push_back({finite + e.v1, finite + e.v0});
       }
       polygons.addOwned(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags,
                         segment, tag);
@@ -90,6 +85,16 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
     set.zfail[m] = volume.zfail;
     set.may_contain_eye[m] = mayContainNearPlane(view, centre, mesh.bounds());
   }
+  // In parallel: each projection divides in double, and the edges' vertices lie anywhere in the
+  // eye pass's array (fractal's 10,306 segments took 0.3 ms in one thread).
+  set.silhouettes.resize(segment_ends.size());
+  constexpr size_t kSegmentChunk = 2048;
+  parallelFor((segment_ends.size() + kSegmentChunk - 1) / kSegmentChunk, [&](size_t chunk) {
+    const size_t end = std::min(segment_ends.size(), (chunk + 1) * kSegmentChunk);
+    for (size_t i = chunk * kSegmentChunk; i < end; ++i)
+      set.silhouettes[i] = screenSegment(eye.clip_vertices[segment_ends[i][0]],
+                                         eye.clip_vertices[segment_ends[i][1]], view);
+  });
   set.triangles = setupTriangles(polygons, view.width, view.height);
   stats.triangles += set.triangles.size();
   set.begin.assign(meshes + 1, 0);
