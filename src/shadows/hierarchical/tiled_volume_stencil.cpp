@@ -44,7 +44,8 @@ class BinTile {
   BinTile(const TileBox& box, const DepthBuffer& depth, int level, const float* tile_depth,
           bool surface_ranges, TileWork& work)
       : box_(box), level_(level), per_row_(kBinTileSize >> level) {
-    for (int k = 1; k <= per_row_; ++k) rows_[k] = rows_[k - 1] | uint64_t(1) << ((k - 1) * per_row_);
+    for (int k = 1; k <= per_row_; ++k)
+      rows_[k] = rows_[k - 1] | uint64_t(1) << ((k - 1) * per_row_);
     const TileDepthRange& range = depth.tileRange(level);
     const int size = 1 << level;
     for (int cy = 0; cy < per_row_; ++cy)
@@ -482,8 +483,8 @@ bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
   // search (a dense volume's run holds hundreds of triangles, a scene may hold thousands of
   // volumes).
   while (first != last) {
-    const size_t v =
-        size_t(std::upper_bound(set.begin.begin(), set.begin.end(), *first) - set.begin.begin()) - 1;
+    const auto after = std::upper_bound(set.begin.begin(), set.begin.end(), *first);
+    const size_t v = size_t(after - set.begin.begin()) - 1;
     const uint32_t* end = std::lower_bound(first, last, set.begin[v + 1]);
     if (hierarchical)
       drawHierarchical(set, v, first, end, tile, depth, target, options, coarse, w);
