@@ -8,6 +8,27 @@
 
 namespace penumbra {
 
+namespace {
+
+// The triangle's depths [lo, hi] (over some part of it) against the box's range [zmin, zmax],
+// with the margin of the header: the float error of the kernels' depth evaluation (the bin
+// tile's origin is within 4 bin tiles of reach) plus the plane's change over 1/8 pixel.
+TileBoxClass decideDepths(const SetupTriangle& t, double lo, double hi, float zmin, float zmax) {
+  const double reach = std::fabs(t.a) + std::fabs(t.b);
+  const double error =
+      8.0 * FLT_EPSILON * (std::max(std::fabs(lo), std::fabs(hi)) + 4.0 * kBinTileSize * reach) +
+      reach / 8.0 + 1e-30;
+  if (lo - error > double(zmax)) return TileBoxClass::Front;
+  if (hi + error < double(zmin)) return TileBoxClass::Behind;
+  return TileBoxClass::Crossing;
+}
+
+}  // namespace
+
+TileBoxClass classifyDepthRange(const SetupTriangle& t, float zmin, float zmax) {
+  return decideDepths(t, t.depth_min, t.depth_max, zmin, zmax);
+}
+
 TileBoxClass classifyTileBox(const SetupTriangle& t, int x0, int y0, int x1, int y1, float zmin,
                              float zmax) {
   // The tile's pixel-centre rectangle in 28.4 units, widened by one unit, clipped by the three
@@ -15,20 +36,7 @@ TileBoxClass classifyTileBox(const SetupTriangle& t, int x0, int y0, int x1, int
   double px[8], py[8], qx[8], qy[8];
   const double lx = double(pixelCentre(x0) - 1), hx = double(pixelCentre(x1) + 1);
   const double ly = double(pixelCentre(y0) - 1), hy = double(pixelCentre(y1) + 1);
-  // The margin of the depth range (see the header), from the plane's gradient and the size of
-  // the depths it is compared with (the bin tile's origin is within 4 bin tiles of reach).
-  const double reach = std::fabs(t.a) + std::fabs(t.b);
-  auto margin = [&](double lo, double hi) {
-    return 8.0 * FLT_EPSILON *
-               (std::max(std::fabs(lo), std::fabs(hi)) + 4.0 * kBinTileSize * reach) +
-           reach / 8.0 + 1e-30;
-  };
-  auto decide = [&](double lo, double hi) {
-    const double error = margin(lo, hi);
-    if (lo - error > double(zmax)) return TileBoxClass::Front;
-    if (hi + error < double(zmin)) return TileBoxClass::Behind;
-    return TileBoxClass::Crossing;
-  };
+  auto decide = [&](double lo, double hi) { return decideDepths(t, lo, hi, zmin, zmax); };
   // Quick answers first, in the order most (triangle, tile) pairs of long shadow quads settle:
   // an edge with the whole rectangle outside it (at the corner where the edge function is
   // largest), then the plane's range over the whole rectangle, a superset of the triangle's part.

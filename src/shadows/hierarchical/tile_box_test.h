@@ -35,6 +35,12 @@ enum class TileBoxClass : uint8_t {
 TileBoxClass classifyTileBox(const SetupTriangle& t, int x0, int y0, int x1, int y1, float zmin,
                              float zmax);
 
+// The same classes from the triangle's whole depth range (SetupTriangle::depth_min/max, over its
+// vertices) instead of its part over a tile's pixels, with the same margin: Front or Behind
+// hold wherever the triangle lies, Crossing may mean the triangle misses the box. Never
+// Outside. A test of two comparisons where classifyTileBox clips.
+TileBoxClass classifyDepthRange(const SetupTriangle& t, float zmin, float zmax);
+
 // True when pixel (x, y)'s centre is inside the triangle, by the kernels' own test
 // (triangle_setup.h: SetupTriangle, top-left rule included).
 inline bool coversPixel(const SetupTriangle& t, int x, int y) {

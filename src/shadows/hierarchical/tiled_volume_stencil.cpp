@@ -303,6 +303,52 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         },
         [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work.tally, kWhole);
   };
+  // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes where
+  // the quad is counted (Front): such a tile is decided per pixel.
+  auto silhouetteMeets = [&](const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+    return !zfail && t.owners[0] != ClipTriangles::kNoOwner &&
+           segmentMeetsTile(set.silhouettes[t.owners[0]], x0, y0, x1, y1);
+  };
+  // The count of every surface pixel of the bin tile, all of them given by one sample, added
+  // to the tiles `reached` (the rects' tiles; the lit and shadowed counts are theirs).
+  auto decideBinTile = [&](uint64_t reached, int32_t count) {
+    reached &= surface;
+    const uint64_t cells = uint64_t(std::popcount(reached));
+    if (count == 0) {
+      work.lit += cells;
+      return;
+    }
+    work.shadowed += cells;
+    work.writes += cells;  // the per-tile counts
+    for (; reached != 0; reached &= reached - 1) coarse[std::countr_zero(reached)] += count;
+  };
+  // A dense volume is not classified triangle by tile, but its triangles' whole depth ranges
+  // (two comparisons each) may still show that none crosses the bin tile's box: all in front
+  // of its surfaces or behind them. Then one sample decides the bin tile, as below. The first
+  // triangle that may cross ends the test: the volume is drawn per pixel.
+  if (dense && !(!zfail && set.may_contain_eye[v] != 0)) {
+    const Cell& s = tile.sampleCell();
+    uint64_t reached = 0;
+    int32_t count = 0;
+    bool crossing = false;
+    for (const uint32_t* k = first; k != last && !crossing; ++k) {
+      if (last - k > ptrdiff_t(kBinLookahead))
+        prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
+      const SetupTriangle& t = set.triangles[*k];
+      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
+      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
+      if (x0 > x1 || y0 > y1) continue;
+      ++work.tally.tested;
+      TileBoxClass whole = classifyDepthRange(t, tile.zmin(), tile.zmax());
+      if (whole == TileBoxClass::Front && silhouetteMeets(t, box.x0, box.y0, box.x1, box.y1))
+        whole = TileBoxClass::Crossing;
+      crossing = whole == TileBoxClass::Crossing;
+      reached |= tile.cellMask(x0, y0, x1, y1);
+      if (whole == counted && coversPixel(t, s.sample_x, s.sample_y))
+        count += drawn(t).contribution;
+    }
+    if (!crossing) return decideBinTile(reached, count);
+  }
   if (per_pixel_only) {
     // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach.
     // Nothing is drawn until a triangle reaches one (a volume over only background here draws
@@ -330,12 +376,6 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     work.boundary += uint64_t(std::popcount(boundary));
     return;
   } else {
-    // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes
-    // where the quad is counted (Front): such a tile is decided per pixel.
-    auto silhouetteMeets = [&](const SetupTriangle& t, int x0, int y0, int x1, int y1) {
-      return !zfail && t.owners[0] != ClipTriangles::kNoOwner &&
-             segmentMeetsTile(set.silhouettes[t.owners[0]], x0, y0, x1, y1);
-    };
     // Each triangle first against the box of its whole rect's pixels and the bin tile's
     // surface range: each smaller tile's box lies inside it, so an answer other than Crossing
     // holds for every tile of the rect (which is then classified without a test of its own:
@@ -377,16 +417,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         if (r.whole == counted && coversPixel(*r.t, s.sample_x, s.sample_y))
           count += drawn(*r.t).contribution;
       }
-      reached &= surface;
-      const uint64_t cells = uint64_t(std::popcount(reached));
-      if (count == 0) {
-        work.lit += cells;
-        return;
-      }
-      work.shadowed += cells;
-      work.writes += cells;  // the per-tile counts
-      for (; reached != 0; reached &= reached - 1) coarse[std::countr_zero(reached)] += count;
-      return;
+      return decideBinTile(reached, count);
     }
     if (tile.level() == kBinTileLevel) {
       // Tiles as large as the bin tile: the one tile's box is the box just tested, so a
