@@ -76,7 +76,8 @@ TechniqueInfo tiledVolumeTechnique(const char* name, const char* summary, Volume
   if (culling == VolumeCulling::Hierarchical)
     table.integer("dense-limit",
                   "a volume with more triangles per 8x8 pixels than this in a 32x32 bin tile "
-                  "is drawn per pixel there, unclassified (0: always classify)",
+                  "is not classified triangle by tile there: decided whole by its triangles' "
+                  "depth ranges, or drawn per pixel (0: always classify)",
                   &TiledVolumeOptions::dense_limit, 0, 1024);
   table
       .check([](const TiledVolumeOptions& o) {

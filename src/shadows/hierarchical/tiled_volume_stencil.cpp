@@ -220,7 +220,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   const int dense_limit = options.dense_limit;
   const bool zfail = set.zfail[v] != 0;
   const int n = tile.perRow();
-  // A volume dense here is drawn per pixel (TiledVolumeStencilOptions::dense_limit).
+  // A volume dense here is not classified triangle by tile (TiledVolumeStencilOptions::
+  // dense_limit).
   constexpr ptrdiff_t kAreas = (kBinTileSize / 8) * (kBinTileSize / 8);  // 8x8 areas per bin tile
   const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * kAreas;
   const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;

@@ -37,11 +37,12 @@ struct TiledVolumeStencilOptions {
   // says why).
   int tile_level = 3;
   // Hierarchical: a volume with more than dense_limit triangles per 8x8 pixels of a bin tile
-  // (16 x dense_limit in a 32x32 bin tile, whatever the tile size) is drawn per pixel there
-  // without classifying its tiles (0: always classified, the thesis's way). A volume of many
-  // small polygons (a finely tessellated caster's silhouette) crosses nearly every tile it
-  // reaches, and testing each (triangle, tile) pair costs more than the pixels it could save.
-  // The stencil is the same either way.
+  // (16 x dense_limit in a 32x32 bin tile, whatever the tile size) is not classified triangle
+  // by tile there (0: always classified, the thesis's way): one sample decides the bin tile if
+  // every triangle's whole depth range lies in front of or behind its box, otherwise the volume
+  // is drawn per pixel. A volume of many small polygons (a finely tessellated caster's
+  // silhouette) crosses nearly every tile it reaches, and testing each (triangle, tile) pair
+  // costs more than the pixels it could save. The stencil is the same either way.
   int dense_limit = 2;
   bool simd = true;
 };
