@@ -226,6 +226,10 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * kAreas;
   const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;
   const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
+  // Wholly on the other side of a box, a triangle fails the depth rule at every surface pixel
+  // in it (z-pass counts what lies in front, z-fail what lies behind): drawn, it would only be
+  // culled or rasterized without a write.
+  const TileBoxClass never = zfail ? TileBoxClass::Front : TileBoxClass::Behind;
   // The depth bounds test for the whole bin tile first (drawDepthBounded): surfaces all nearer
   // than the volume (where that is allowed) or, with z-fail, all farther count nothing from it.
   if (((!zfail || !set.may_contain_eye[v]) && tile.zmin() > set.depth_max[v]) ||
@@ -355,23 +359,27 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // Nothing is drawn until a triangle reaches one (a volume over only background here draws
     // nothing); the triangles before it are then drawn first (the stencil is a sum: the order
     // does not matter).
+    // A triangle whose whole depth range lies on the side that never counts is not drawn.
+    auto drawCounting = [&](const SetupTriangle& t) {
+      if (classifyDepthRange(t, tile.zmin(), tile.zmax()) == never) return;
+      TileEdges e;
+      if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) draw(t, e);
+    };
     uint64_t reached = 0;
     const uint32_t* pending = first;  // the triangles before it are drawn
     for (const uint32_t* k = first; k != last; ++k) {
       if (last - k > ptrdiff_t(kBinLookahead))
         prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
       const SetupTriangle& t = set.triangles[*k];
-      TileEdges e;
-      if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
-      reached |= tile.cellMask(e);
+      // The rect setupTileRect would give: the triangle's pixel box clipped to the bin tile.
+      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
+      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
+      if (x0 > x1 || y0 > y1) continue;
+      reached |= tile.cellMask(x0, y0, x1, y1);
       if ((reached & surface) == 0) continue;
-      for (; pending != k; ++pending) {
-        const SetupTriangle& p = set.triangles[*pending];
-        TileEdges pe;
-        if (setupTileRect(p, box.x0, box.y0, box.x1, box.y1, pe)) draw(p, pe);
-      }
+      for (; pending != k; ++pending) drawCounting(set.triangles[*pending]);
       pending = k + 1;
-      draw(t, e);
+      drawCounting(t);
     }
     boundary = reached & surface;
     work.boundary += uint64_t(std::popcount(boundary));
@@ -425,7 +433,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
       // triangle crossing it crosses the tile, and the tile is a boundary tile.
       boundary = surface;
       work.boundary += uint64_t(std::popcount(boundary));
-      for (Rect& r : rects) draw(*r.t, r.e);
+      for (Rect& r : rects)
+        if (r.whole != never) draw(*r.t, r.e);
       return;
     }
     // Tile by tile: the rects crossing the bin tile's box are tested per tile (a tile found a
@@ -485,7 +494,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     }
     if (boundary == 0) return;
   }
-  for (Rect& r : rects) draw(*r.t, r.e);
+  for (Rect& r : rects)
+    if (r.whole != never) draw(*r.t, r.e);
 }
 
 TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
