@@ -106,6 +106,7 @@ class BinTile {
   int level() const { return level_; }
   const TileBox& box() const { return box_; }
   const Cell& cell(int cx, int cy) const { return cells_[cy * per_row_ + cx]; }
+  const Cell& cell(int i) const { return cells_[i]; }  // bit i of a cell mask
   // Cells the rect's pixels touch, local to the bin tile.
   void cellRange(const TileEdges& e, int& cx0, int& cy0, int& cx1, int& cy1) const {
     cx0 = (e.x0 - box_.x0) >> level_;
@@ -171,7 +172,42 @@ struct Drawn {
 
 Drawn drawn(const SetupTriangle& t) {
   const bool zfail = (t.flags & kZFail) != 0;
-  return {t.payload * t.facing * (zfail ? -1 : 1), zfail ? DepthRule::NotCloser : DepthRule::Closer};
+  return {t.payload * t.facing * (zfail ? -1 : 1),
+          zfail ? DepthRule::NotCloser : DepthRule::Closer};
+}
+
+// Calls fn(t, e) for each triangle of a volume's run in bin tile `box` with its rect there
+// (setupTileRect from the bin tile's origin, as the per-pixel passes: the same float depth at
+// every pixel), asking for the records kBinLookahead ahead.
+template <class Fn>
+void forEachTileRect(const ShadowVolumeSet& set, const uint32_t* first, const uint32_t* last,
+                     const TileBox& box, Fn&& fn) {
+  for (const uint32_t* k = first; k != last; ++k) {
+    if (last - k > ptrdiff_t(kBinLookahead))
+      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
+    const SetupTriangle& t = set.triangles[*k];
+    TileEdges e;
+    if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) fn(t, e);
+  }
+}
+
+// Calls fn(k, t, cells) for each triangle t = set.triangles[*k] of a volume's run whose pixel
+// box meets the bin tile, with the tiles of its rect there as a cell mask (the rect
+// setupTileRect would give, without its depth set-up), asking for the records ahead; stops
+// when fn returns false.
+template <class Fn>
+void forEachRectMask(const ShadowVolumeSet& set, const uint32_t* first, const uint32_t* last,
+                     const BinTile& tile, Fn&& fn) {
+  const TileBox& box = tile.box();
+  for (const uint32_t* k = first; k != last; ++k) {
+    if (last - k > ptrdiff_t(kBinLookahead))
+      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
+    const SetupTriangle& t = set.triangles[*k];
+    const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
+    const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
+    if (x0 > x1 || y0 > y1) continue;
+    if (!fn(k, t, tile.cellMask(x0, y0, x1, y1))) return;
+  }
 }
 
 // Depth bounds: the volume's triangles drawn per pixel in the tiles that neither the ordinary
@@ -187,13 +223,7 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // The test for the whole bin tile first: when it rejects the volume, no triangle of it is set
   // up here (forEachCullRect would reject each on the same range).
   if ((near_test && tile.zmin() > hi) || (zfail && tile.zmax() < lo)) return;
-  const TileBox& box = tile.box();
-  for (const uint32_t* k = first; k != last; ++k) {
-    if (last - k > ptrdiff_t(kBinLookahead))
-      prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
-    const SetupTriangle& t = set.triangles[*k];
-    TileEdges e;
-    if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+  forEachTileRect(set, first, last, tile.box(), [&](const SetupTriangle& t, TileEdges& e) {
     const Drawn d = drawn(t);
     forEachCullRect(
         t, e, depth, tile.level(),
@@ -207,7 +237,7 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
           stencilKernel(rect, d.contribution, d.rule, target, work.kernel, simd);
         },
         work.tally);
-  }
+  });
 }
 
 // Hierarchical: classify the volume's tiles, decide the inner ones by their sample, draw the
@@ -336,22 +366,18 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     uint64_t reached = 0;
     int32_t count = 0;
     bool crossing = false;
-    for (const uint32_t* k = first; k != last && !crossing; ++k) {
-      if (last - k > ptrdiff_t(kBinLookahead))
-        prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
-      const SetupTriangle& t = set.triangles[*k];
-      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
-      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
-      if (x0 > x1 || y0 > y1) continue;
+    forEachRectMask(set, first, last, tile, [&](const uint32_t*, const SetupTriangle& t,
+                                                uint64_t cells) {
       ++work.tally.tested;
       TileBoxClass whole = classifyDepthRange(t, tile.zmin(), tile.zmax());
       if (whole == TileBoxClass::Front && silhouetteMeets(t, box.x0, box.y0, box.x1, box.y1))
         whole = TileBoxClass::Crossing;
       crossing = whole == TileBoxClass::Crossing;
-      reached |= tile.cellMask(x0, y0, x1, y1);
+      reached |= cells;
       if (whole == counted && coversPixel(t, s.sample_x, s.sample_y))
         count += drawn(t).contribution;
-    }
+      return !crossing;
+    });
     if (!crossing) return decideBinTile(reached, count);
   }
   if (per_pixel_only) {
@@ -367,20 +393,15 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     };
     uint64_t reached = 0;
     const uint32_t* pending = first;  // the triangles before it are drawn
-    for (const uint32_t* k = first; k != last; ++k) {
-      if (last - k > ptrdiff_t(kBinLookahead))
-        prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
-      const SetupTriangle& t = set.triangles[*k];
-      // The rect setupTileRect would give: the triangle's pixel box clipped to the bin tile.
-      const int x0 = std::max(box.x0, t.min_x), y0 = std::max(box.y0, t.min_y);
-      const int x1 = std::min(box.x1, t.max_x), y1 = std::min(box.y1, t.max_y);
-      if (x0 > x1 || y0 > y1) continue;
-      reached |= tile.cellMask(x0, y0, x1, y1);
-      if ((reached & surface) == 0) continue;
+    forEachRectMask(set, first, last, tile, [&](const uint32_t* k, const SetupTriangle& t,
+                                                uint64_t cells) {
+      reached |= cells;
+      if ((reached & surface) == 0) return true;
       for (; pending != k; ++pending) drawCounting(set.triangles[*pending]);
       pending = k + 1;
       drawCounting(t);
-    }
+      return true;
+    });
     boundary = reached & surface;
     work.boundary += uint64_t(std::popcount(boundary));
     return;
@@ -390,13 +411,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // holds for every tile of the rect (which is then classified without a test of its own:
     // the sample decides).
     bool any_crossing = false;
-    for (const uint32_t* k = first; k != last; ++k) {
-      if (last - k > ptrdiff_t(kBinLookahead))
-        prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
-      const SetupTriangle& t = set.triangles[*k];
-      TileEdges e;
-      // The bin tile's origin, as the per-pixel passes: the same float depth at every pixel.
-      if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) continue;
+    forEachTileRect(set, first, last, box, [&](const SetupTriangle& t, TileEdges& e) {
       ++work.tally.tested;
       TileBoxClass whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
       // The count changes across a silhouette edge on both of its sides, beyond the rect of
@@ -405,11 +420,11 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         whole = TileBoxClass::Crossing;  // decide tile by tile
       if (whole == TileBoxClass::Outside) {
         ++work.tally.culled;
-        continue;  // no pixel centre of the bin tile under it
+        return;  // no pixel centre of the bin tile under it
       }
       any_crossing |= whole == TileBoxClass::Crossing;
       rects.push_back({&t, e, whole});
-    }
+    });
     // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
     // outside the volume, so every surface pixel of the bin tile has one count, the sample's
     // (section 4.3's argument for a tile, made for the bin tile; z-pass's open silhouette
@@ -453,7 +468,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
       const int32_t contribution = drawn(t).contribution;
       for (uint64_t m = reached & ~boundary; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
-        const Cell& c = tile.cell(i % n, i / n);
+        const Cell& c = tile.cell(i);
         ++work.tally.tested;
         const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
         if (cls == TileBoxClass::Outside) {
@@ -477,7 +492,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
       const int32_t contribution = drawn(*r.t).contribution;
       for (uint64_t m = tile.cellMask(r.e) & decided; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
-        const Cell& c = tile.cell(i % n, i / n);
+        const Cell& c = tile.cell(i);
         if (coversPixel(*r.t, c.sample_x, c.sample_y)) sample[i] += contribution;
       }
     }
