@@ -178,17 +178,19 @@ Drawn drawn(const SetupTriangle& t) {
 
 // Calls fn(t, e) for each triangle of a volume's run in bin tile `box` with its rect there
 // (setupTileRect from the bin tile's origin, as the per-pixel passes: the same float depth at
-// every pixel), asking for the records kBinLookahead ahead.
+// every pixel), asking for the records kBinLookahead ahead; stops after a triangle for which fn
+// returns false, and returns where the run's rest begins (`last` when it went through).
 template <class Fn>
-void forEachTileRect(const ShadowVolumeSet& set, const uint32_t* first, const uint32_t* last,
-                     const TileBox& box, Fn&& fn) {
+const uint32_t* forEachTileRect(const ShadowVolumeSet& set, const uint32_t* first,
+                                const uint32_t* last, const TileBox& box, Fn&& fn) {
   for (const uint32_t* k = first; k != last; ++k) {
     if (last - k > ptrdiff_t(kBinLookahead))
       prefetchSetupTriangle(set.triangles[k[kBinLookahead]]);
     const SetupTriangle& t = set.triangles[*k];
     TileEdges e;
-    if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) fn(t, e);
+    if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e) && !fn(t, e)) return k + 1;
   }
+  return last;
 }
 
 // Calls fn(k, t, cells) for each triangle t = set.triangles[*k] of a volume's run whose pixel
@@ -237,6 +239,7 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
           stencilKernel(rect, d.contribution, d.rule, target, work.kernel, simd);
         },
         work.tally);
+    return true;
   });
 }
 
@@ -380,17 +383,18 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     });
     if (!crossing) return decideBinTile(reached, count);
   }
+  // A triangle drawn unclassified, unless its whole depth range lies on the side that never
+  // counts.
+  auto drawCounting = [&](const SetupTriangle& t) {
+    if (classifyDepthRange(t, tile.zmin(), tile.zmax()) == never) return;
+    TileEdges e;
+    if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) draw(t, e);
+  };
   if (per_pixel_only) {
     // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach.
     // Nothing is drawn until a triangle reaches one (a volume over only background here draws
     // nothing); the triangles before it are then drawn first (the stencil is a sum: the order
     // does not matter).
-    // A triangle whose whole depth range lies on the side that never counts is not drawn.
-    auto drawCounting = [&](const SetupTriangle& t) {
-      if (classifyDepthRange(t, tile.zmin(), tile.zmax()) == never) return;
-      TileEdges e;
-      if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) draw(t, e);
-    };
     uint64_t reached = 0;
     const uint32_t* pending = first;  // the triangles before it are drawn
     forEachRectMask(set, first, last, tile, [&](const uint32_t* k, const SetupTriangle& t,
@@ -409,9 +413,12 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // Each triangle first against the box of its whole rect's pixels and the bin tile's
     // surface range: each smaller tile's box lies inside it, so an answer other than Crossing
     // holds for every tile of the rect (which is then classified without a test of its own:
-    // the sample decides).
+    // the sample decides). With tiles as large as the bin tile, the first triangle that crosses
+    // makes it a boundary tile: the rest of the run is drawn without a test (`rest`).
+    const bool bin_level = tile.level() == kBinTileLevel;
     bool any_crossing = false;
-    forEachTileRect(set, first, last, box, [&](const SetupTriangle& t, TileEdges& e) {
+    const uint32_t* rest = forEachTileRect(set, first, last, box, [&](const SetupTriangle& t,
+                                                                      TileEdges& e) {
       ++work.tally.tested;
       TileBoxClass whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
       // The count changes across a silhouette edge on both of its sides, beyond the rect of
@@ -420,10 +427,11 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         whole = TileBoxClass::Crossing;  // decide tile by tile
       if (whole == TileBoxClass::Outside) {
         ++work.tally.culled;
-        return;  // no pixel centre of the bin tile under it
+        return true;  // no pixel centre of the bin tile under it
       }
       any_crossing |= whole == TileBoxClass::Crossing;
       rects.push_back({&t, e, whole});
+      return !(bin_level && any_crossing);
     });
     // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
     // outside the volume, so every surface pixel of the bin tile has one count, the sample's
@@ -443,13 +451,18 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
       }
       return decideBinTile(reached, count);
     }
-    if (tile.level() == kBinTileLevel) {
+    if (bin_level) {
       // Tiles as large as the bin tile: the one tile's box is the box just tested, so a
       // triangle crossing it crosses the tile, and the tile is a boundary tile.
       boundary = surface;
       work.boundary += uint64_t(std::popcount(boundary));
       for (Rect& r : rects)
         if (r.whole != never) draw(*r.t, r.e);
+      for (; rest != last; ++rest) {
+        if (last - rest > ptrdiff_t(kBinLookahead))
+          prefetchSetupTriangle(set.triangles[rest[kBinLookahead]]);
+        drawCounting(set.triangles[*rest]);
+      }
       return;
     }
     // Tile by tile: the rects crossing the bin tile's box are tested per tile (a tile found a
