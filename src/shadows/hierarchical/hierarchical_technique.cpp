@@ -16,7 +16,7 @@ namespace {
 struct TiledVolumeOptions {
   VolumeMode mode = VolumeMode::Auto;
   int tile_level = 3;  // set by each technique (tiledVolumeTechnique)
-  int dense_limit = 2;  // hierarchical only: TiledVolumeStencilOptions::dense_limit
+  int dense_limit = 8;  // hierarchical only: TiledVolumeStencilOptions::dense_limit
 };
 
 class TiledVolumes final : public PreparedTechnique {

@@ -42,8 +42,10 @@ struct TiledVolumeStencilOptions {
   // every triangle's whole depth range lies in front of or behind its box, otherwise the volume
   // is drawn per pixel. A volume of many small polygons (a finely tessellated caster's
   // silhouette) crosses nearly every tile it reaches, and testing each (triangle, tile) pair
-  // costs more than the pixels it could save. The stencil is the same either way.
-  int dense_limit = 2;
+  // costs more than the pixels it could save; with tiles as large as the bin tile the tests stop
+  // at the first triangle that crosses, which makes a higher limit pay (bench/README.md). The
+  // stencil is the same either way.
+  int dense_limit = 8;
   bool simd = true;
 };
 
