@@ -89,16 +89,31 @@ def summarize(out_dir):
                             "lp_num_threads", "frames", "warmup")}
 
     peer_fps = {}
+    peer_fps_by_round = {}  # (scene, size) -> {round: fps}
     if peer:
         for r in peer["runs"]:
             key = (r["scene"], f'{r["width"]}x{r["height"]}')
             peer_fps.setdefault(key, []).append(r["fps_median"])
+            if "round" in r:
+                peer_fps_by_round.setdefault(key, {})[r["round"]] = r["fps_median"]
+
+    def fps_by_round(runs):
+        return {r["round"]: r["fps"] for r in runs if "round" in r and "fps" in r}
+
+    def paired(ours_by_round, theirs_by_round):
+        """Per-round ratios of two runs made next to each other in one round: the machine's
+        drift between rounds (20-40 % here) cancels in each ratio, which the ratio of the two
+        medians does not do."""
+        ratios = [ours_by_round[k] / theirs_by_round[k] for k in ours_by_round
+                  if k in theirs_by_round and theirs_by_round[k] > 0]
+        return spread(ratios) if ratios else None
 
     for name, runs in by_name.items():
         parts = name.split("/")
         if parts[0] == "HardShadowFrame":
             scene, size = parts[1], parts[2]
             row = {"scene": scene, "size": size, "fps": counter(runs, "fps"),
+                   "fps_by_round": fps_by_round(runs),
                    "technique": parts[3] if len(parts) > 3 else "volume",
                    "scene_triangles": runs[0].get("scene_triangles"),
                    "pass_ms": {p: counter(runs, p + "_ms")["median"]
@@ -106,6 +121,8 @@ def summarize(out_dir):
             if (scene, size) in peer_fps:
                 row["llvmpipe_fps"] = spread(peer_fps[(scene, size)])
                 row["ratio"] = row["fps"]["median"] / row["llvmpipe_fps"]["median"]
+                row["ratio_per_round"] = paired(row["fps_by_round"],
+                                                peer_fps_by_round.get((scene, size), {}))
             summary["hard_shadow_frames"].append(row)
         elif parts[0] == "EyePass":
             summary["eye_pass"].append({"scene": parts[1], "size": parts[2], "kernel": parts[3],
@@ -147,12 +164,13 @@ def summarize(out_dir):
 
     # Other techniques' hard-shadow frames (HardShadowFrame/<scene>/<size>/<technique>) against
     # the volume frame of the same scene and size, medians of the same session.
-    volume_fps = {(r["scene"], r["size"]): r["fps"]["median"] for r in summary["hard_shadow_frames"]
-                  if r["technique"] == "volume"}
+    volume_rows = {(r["scene"], r["size"]): r for r in summary["hard_shadow_frames"]
+                   if r["technique"] == "volume"}
     for r in summary["hard_shadow_frames"]:
-        base = volume_fps.get((r["scene"], r["size"]))
+        base = volume_rows.get((r["scene"], r["size"]))
         if base and r["technique"] != "volume":
-            r["fps_vs_volume"] = r["fps"]["median"] / base
+            r["fps_vs_volume"] = r["fps"]["median"] / base["fps"]["median"]
+            r["fps_vs_volume_per_round"] = paired(r["fps_by_round"], base["fps_by_round"])
 
     order = {"columns": 0, "spheres": 1, "fractal": 2}
     summary["hard_shadow_frames"].sort(
@@ -170,6 +188,10 @@ def summarize(out_dir):
     return markdown
 
 
+def spread_text(s):
+    return f'{s["median"]:.2f}x [{s["min"]:.2f}-{s["max"]:.2f}]' if s else "-"
+
+
 def to_markdown(s, have_peer):
     m = s.get("machine", {})
     cpu = m.get("cpu_model", "?")
@@ -181,9 +203,12 @@ def to_markdown(s, have_peer):
              f'{m.get("load_average_before", "?")} before / {m.get("load_average_after", "?")} after; '
              f'medians over {m.get("rounds", "?")} rounds, range in brackets.', ""]
     if s["hard_shadow_frames"]:
-        lines += ["Hard-shadow frame (eye pass + shadow volumes, auto z-pass/z-fail + shading):",
+        lines += ["Hard-shadow frame (eye pass + shadow volumes, auto z-pass/z-fail + shading). "
+                  "Ratio: of the medians; per round: the median of the rounds' own ratios (the "
+                  "two runs of a round are minutes apart at most, so the machine's drift between "
+                  "rounds cancels), range in brackets:",
                   "", "| scene | size | penumbra fps | eye / silhouette / volumes / resolve / shade "
-                  "ms | llvmpipe fps | ratio |", "|---|---|---|---|---|---|"]
+                  "ms | llvmpipe fps | ratio | per round |", "|---|---|---|---|---|---|---|"]
     for r in s["hard_shadow_frames"]:
         passes = " / ".join(f'{r["pass_ms"].get(p, 0):.1f}' for p in PASS_ORDER)
         fps = r["fps"]
@@ -194,10 +219,15 @@ def to_markdown(s, have_peer):
             ratio = f'{r["ratio"]:.2f}x'
         else:
             theirs, ratio = "not run", "-"
+        per_round = spread_text(r.get("ratio_per_round"))
         scene = r["scene"] if r["technique"] == "volume" else f'{r["scene"]}, {r["technique"]}'
         if "fps_vs_volume" in r:
-            ours += f' ({r["fps_vs_volume"]:.2f}x volume)'
-        lines.append(f'| {scene} | {r["size"]} | {ours} | {passes} | {theirs} | {ratio} |')
+            ours += f' ({r["fps_vs_volume"]:.2f}x volume'
+            if r.get("fps_vs_volume_per_round"):
+                ours += f'; per round {spread_text(r["fps_vs_volume_per_round"])}'
+            ours += ")"
+        lines.append(f'| {scene} | {r["size"]} | {ours} | {passes} | {theirs} | {ratio} | '
+                     f'{per_round} |')
     if have_peer and "peer" in s:
         p = s["peer"]
         lines += ["", f'Peer: {p.get("gl_renderer")}, {p.get("gl_version")}; z-fail stencil '
