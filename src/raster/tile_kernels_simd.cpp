@@ -77,13 +77,17 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
   counts.writes += writes;
 }
 
-void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
-                       const StencilTarget& target, KernelCounts& counts,
-                       StencilOwners owners) {
+// StencilKernelSimd with the depth rule and whether there are owners as constants: as run-time
+// values they cost every row of a sliver a test of each (the compiler kept them in memory, and
+// chose the rule's mask by moving both comparisons' masks through general registers).
+template <DepthRule kRule, bool kOwned>
+HWY_INLINE void StencilRows(const TileEdges& e, int32_t contribution, const StencilTarget& target,
+                            KernelCounts& counts, StencilOwners owners) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const hn::RebindToUnsigned<decltype(df)> du;
-  const bool owned = owners.any();
+  constexpr bool owned = kOwned;
+  constexpr DepthRule rule = kRule;
   const auto owner0 = hn::Set(du, owners.first), owner1 = hn::Set(du, owners.second);
   const int lanes = int(hn::Lanes(df));
   const auto iota_i = hn::Iota(di, 0);
@@ -121,10 +125,13 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
     // Depth rule against the stored depth, only where there is a surface (stored depth > 0).
     const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(x - e.tx0))));
     const auto stored = hn::MaskedLoad(inside, df, target.depth + at);
-    const auto pass = rule == DepthRule::Closer ? hn::Gt(d, stored) : hn::Le(d, stored);
+    const auto pass = [&] {
+      if constexpr (rule == DepthRule::Closer) return hn::Gt(d, stored);
+      else return hn::Le(d, stored);
+    }();
     auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
     if (kSkip && hn::AllFalse(df, write)) return;
-    if (owned) {
+    if constexpr (owned) {
       const auto write_u = hn::RebindMask(du, write);
       const auto id = hn::MaskedLoad(write_u, du, target.primitive + at);
       write = hn::RebindMask(df, hn::AndNot(hn::Or(hn::Eq(id, owner0), hn::Eq(id, owner1)),
@@ -165,6 +172,18 @@ void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
   }
   counts.covered += covered;
   counts.writes += writes;
+}
+
+void StencilKernelSimd(const TileEdges& e, int32_t contribution, DepthRule rule,
+                       const StencilTarget& target, KernelCounts& counts,
+                       StencilOwners owners) {
+  const bool owned = owners.any();
+  if (rule == DepthRule::Closer) {
+    if (owned) return StencilRows<DepthRule::Closer, true>(e, contribution, target, counts, owners);
+    return StencilRows<DepthRule::Closer, false>(e, contribution, target, counts, owners);
+  }
+  if (owned) return StencilRows<DepthRule::NotCloser, true>(e, contribution, target, counts, owners);
+  StencilRows<DepthRule::NotCloser, false>(e, contribution, target, counts, owners);
 }
 
 void RowSpansSimd(const TileEdges& e, int y0, int count, int32_t* x_lo, int32_t* x_hi) {
