@@ -66,5 +66,22 @@ TEST(SilhouetteCasters, WindingNumberOfClosedSphere) {
   EXPECT_TRUE(insideClosedMesh(sphere, dvec3(0.1, 0.2, -0.3)));
 }
 
+// insideClosedMesh answers points outside the mesh's box without a ray, and must still cast one
+// for points inside the box: a corner of the box is outside the sphere although inside the box,
+// and a point just inside a face of the box but outside the sphere's surface likewise. Failing,
+// a light in a caster's box would cast from the wrong facing (findSilhouette).
+TEST(SilhouetteCasters, InsideClosedMeshInAndOutOfItsBox) {
+  Mesh sphere = openSphere(vec3(0.0f), 1.0f, std::numbers::pi);
+  buildEdges(sphere);
+  ASSERT_TRUE(sphere.closed);
+  const Bounds3 box = sphere.bounds();
+  EXPECT_FALSE(insideClosedMesh(sphere, dvec3(3.0, 0.0, 0.0)));   // outside the box
+  EXPECT_FALSE(insideClosedMesh(sphere, dvec3(0.0, -1.5, 0.0)));
+  EXPECT_FALSE(insideClosedMesh(sphere, dvec3(box.max) * 0.95));   // in the box's corner
+  EXPECT_FALSE(insideClosedMesh(sphere, dvec3(box.min) * 0.95));
+  EXPECT_TRUE(insideClosedMesh(sphere, dvec3(0.0, 0.0, 0.0)));
+  EXPECT_TRUE(insideClosedMesh(sphere, dvec3(0.0, 0.9, 0.0)));
+}
+
 }  // namespace test_silhouette_casters
 }  // namespace penumbra

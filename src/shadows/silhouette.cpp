@@ -62,6 +62,14 @@ double windingNumber(const Mesh& mesh, const dvec3& point, const std::vector<uin
 }
 
 bool insideClosedMesh(const Mesh& mesh, const dvec3& point, const std::vector<uint8_t>* skip) {
+  // A closed mesh lies within its vertices' box: a point outside the box is outside the mesh,
+  // without a ray through every triangle (findSilhouette asks once per mesh and light, every
+  // frame; the light is seldom inside a caster's box). The vertices are floats, so the box's
+  // bounds compare exactly with the point in double.
+  const Bounds3 box = mesh.bounds();
+  if (point.x < box.min.x || point.y < box.min.y || point.z < box.min.z || point.x > box.max.x ||
+      point.y > box.max.y || point.z > box.max.z)
+    return false;
   // Directions with no special alignment to axes or to each other; the next is tried when a ray
   // grazes an edge.
   static const std::array<dvec3, 4> kDirections = {glm::normalize(dvec3(0.5773, 0.6178, 0.5339)),
