@@ -79,6 +79,7 @@ TEST(SilhouetteCasters, InsideClosedMeshInAndOutOfItsBox) {
   EXPECT_FALSE(insideClosedMesh(sphere, dvec3(0.0, -1.5, 0.0)));
   EXPECT_FALSE(insideClosedMesh(sphere, dvec3(box.max) * 0.95));   // in the box's corner
   EXPECT_FALSE(insideClosedMesh(sphere, dvec3(box.min) * 0.95));
+  EXPECT_FALSE(insideClosedMesh(sphere, dvec3(box.max.x * 0.99, 0.5, 0.0)));  // inside a face
   EXPECT_TRUE(insideClosedMesh(sphere, dvec3(0.0, 0.0, 0.0)));
   EXPECT_TRUE(insideClosedMesh(sphere, dvec3(0.0, 0.9, 0.0)));
 }
