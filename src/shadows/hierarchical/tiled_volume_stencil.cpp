@@ -212,26 +212,37 @@ void forEachRectMask(const ShadowVolumeSet& set, const uint32_t* first, const ui
   }
 }
 
+// The depth bounds test of thesis section 2.2 (Figure 2.3) for volume v: true when a tile whose
+// surfaces span [zmin, zmax] counts nothing from the volume. Surfaces all nearer than the whole
+// volume: z-pass counts nothing there, z-fail the volume's count at the eye, zero unless the eye
+// may be inside; with z-fail, surfaces all farther than the volume count nothing either.
+struct DepthBounds {
+  DepthBounds(const ShadowVolumeSet& set, size_t v)
+      : lo(set.depth_min[v]), hi(set.depth_max[v]), zfail(set.zfail[v] != 0),
+        near_test(!zfail || !set.may_contain_eye[v]) {}
+  bool rejects(float zmin, float zmax) const {
+    return (near_test && zmin > hi) || (zfail && zmax < lo);
+  }
+  float lo, hi;
+  bool zfail, near_test;
+};
+
 // Depth bounds: the volume's triangles drawn per pixel in the tiles that neither the ordinary
 // depth-rule test (rasterizer.cpp: depthRuleTiles) nor the volume's bounds reject.
 void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
                       const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
                       const StencilTarget& target, bool simd, TileWork& work) {
-  const bool zfail = set.zfail[v] != 0;
-  const float lo = set.depth_min[v], hi = set.depth_max[v];
-  // Surfaces nearer than the whole volume: z-pass counts nothing there, z-fail the volume's
-  // count at the eye, zero unless the eye may be inside.
-  const bool near_test = !zfail || !set.may_contain_eye[v];
+  const DepthBounds bounds(set, v);
+  const bool zfail = bounds.zfail;
   // The test for the whole bin tile first: when it rejects the volume, no triangle of it is set
   // up here (forEachCullRect would reject each on the same range).
-  if ((near_test && tile.zmin() > hi) || (zfail && tile.zmax() < lo)) return;
+  if (bounds.rejects(tile.zmin(), tile.zmax())) return;
   forEachTileRect(set, first, last, tile.box(), [&](const SetupTriangle& t, TileEdges& e) {
     const Drawn d = drawn(t);
     forEachCullRect(
         t, e, depth, tile.level(),
         [&](const TileEdges& sub, float zmin, float zmax) {
-          if (near_test && zmin > hi) return 0;  // every surface nearer than the volume
-          if (zfail && zmax < lo) return 0;    // every surface farther than the volume
+          if (bounds.rejects(zmin, zmax)) return 0;
           return depthRuleTiles(t, sub, zfail, zmin, zmax, false) == DepthRuleTiles::None ? 0
                                                                                          : 1;
         },
@@ -257,7 +268,10 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // dense_limit).
   constexpr ptrdiff_t kAreas = (kBinTileSize / 8) * (kBinTileSize / 8);  // 8x8 areas per bin tile
   const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * kAreas;
-  const bool per_pixel_only = (!zfail && set.may_contain_eye[v] != 0) || dense;
+  // A z-pass volume the eye may be inside is open on screen: no tile of it is decided by one
+  // sample (volume_set.h: may_contain_eye).
+  const bool open = !zfail && set.may_contain_eye[v] != 0;
+  const bool per_pixel_only = open || dense;
   const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
   // Wholly on the other side of a box, a triangle fails the depth rule at every surface pixel
   // in it (z-pass counts what lies in front, z-fail what lies behind): drawn, it would only be
@@ -265,9 +279,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   const TileBoxClass never = zfail ? TileBoxClass::Front : TileBoxClass::Behind;
   // The depth bounds test for the whole bin tile first (drawDepthBounded): surfaces all nearer
   // than the volume (where that is allowed) or, with z-fail, all farther count nothing from it.
-  if (((!zfail || !set.may_contain_eye[v]) && tile.zmin() > set.depth_max[v]) ||
-      (zfail && tile.zmax() < set.depth_min[v]))
-    return;
+  const DepthBounds bounds(set, v);
+  if (bounds.rejects(tile.zmin(), tile.zmax())) return;
   const TileBox& box = tile.box();
   const uint64_t surface = tile.surfaceMask();
   // The triangles' rects set up here, with their class against the bin tile's box, kept for
@@ -286,10 +299,6 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // pass, and a polygon covering a whole tile and passing at every pixel of it adds to the
   // tile's count instead (the z-min trivial accept, thesis section 1.5).
   constexpr int kDraw = 1, kWhole = 2;
-  // Boundary tiles also take the depth bounds test (drawDepthBounded); a whole bin tile passed
-  // it above.
-  const float bound_lo = set.depth_min[v], bound_hi = set.depth_max[v];
-  const bool near_test = !zfail || !set.may_contain_eye[v];
   auto depthRule = [&](const SetupTriangle& t, const TileEdges& sub, float zmin, float zmax) {
     switch (depthRuleTiles(t, sub, zfail, zmin, zmax, true)) {
       case DepthRuleTiles::None: return 0;
@@ -335,8 +344,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         t, e, depth, tile.level(),
         [&](const TileEdges& sub, float zmin, float zmax) {
           if ((tile.cellMask(sub) & boundary) == 0) return 0;
-          if (near_test && zmin > bound_hi) return 0;  // the depth bounds test
-          if (zfail && zmax < bound_lo) return 0;
+          // Boundary tiles also take the depth bounds test (a whole bin tile passed it above).
+          if (bounds.rejects(zmin, zmax)) return 0;
           return depthRule(t, sub, zmin, zmax);
         },
         [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work.tally, kWhole);
@@ -364,7 +373,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   // (two comparisons each) may still show that none crosses the bin tile's box: all in front
   // of its surfaces or behind them. Then one sample decides the bin tile, as below. The first
   // triangle that may cross ends the test: the volume is drawn per pixel.
-  if (dense && !(!zfail && set.may_contain_eye[v] != 0)) {
+  if (dense && !open) {
     const Cell& s = tile.sampleCell();
     uint64_t reached = 0;
     int32_t count = 0;
