@@ -95,6 +95,12 @@ void drawDepth(const ClipTriangles& triangles, Image<float>& depth, Image<uint32
     // the tile reads and writes it, then stored once. Drawn in place, the depth kernel waits on
     // the first load of each tile row (raster/tile_copy.h; bench/README.md): a tile's 32 rows
     // lie one image row apart, in as many pages.
+    // The tile's rows of depth and ids are written when it is done: asked for now
+    // (prefetchRow), they arrive while it is drawn.
+    for (int y = box.y0; y <= box.y1; ++y) {
+      prefetchRow(&depth.at(box.x0, y), box.x1 - box.x0 + 1, true);
+      prefetchRow(&primitive.at(box.x0, y), box.x1 - box.x0 + 1, true);
+    }
     TileCopy<float> tile_depth(0.0f);
     TileCopy<uint32_t> tile_primitive(kNoPrimitive);
     DepthTarget target{tile_depth.data(), tile_primitive.data(), kBinTileSize};
