@@ -28,13 +28,14 @@ struct TileWork {
 };
 
 // A culling tile of a bin tile: its pixels, and the depth range and a sample pixel of its
-// surface pixels (none: only background, nothing to shadow).
+// surface pixels (none: only background, nothing to shadow). No member initialisers: a bin
+// tile holds room for 64 (4x4 tiles) and sets only the ones its tile size uses.
 struct Cell {
   int x0, y0, x1, y1;
-  bool surface = false;
-  float zmin = 0.0f, zmax = 0.0f;
-  int sample_x = 0, sample_y = 0;
-  int surface_pixels = 0;  // with surface ranges; otherwise every pixel of a surface cell
+  bool surface;
+  float zmin, zmax;
+  int sample_x, sample_y;
+  int surface_pixels;  // with surface ranges; otherwise every pixel of a surface cell
 };
 
 class BinTile {
@@ -51,6 +52,7 @@ class BinTile {
     for (int cy = 0; cy < per_row_; ++cy)
       for (int cx = 0; cx < per_row_; ++cx) {
         Cell& c = cells_[cy * per_row_ + cx];
+        c = Cell{};
         c.x0 = box.x0 + cx * size;
         c.y0 = box.y0 + cy * size;
         c.x1 = std::min(box.x1, c.x0 + size - 1);
@@ -70,18 +72,28 @@ class BinTile {
         // volume extruded away from the light reaches: the box is taken over the surface
         // pixels only (the stencil is never read on the background), at the cost of reading
         // the tile's depths. The sample is the first surface pixel.
-        c.zmin = zmax;
-        c.surface_pixels = 0;
+        // Every pixel of the tile is read once; the sample is found by a second look along
+        // the first row that has a surface pixel.
+        work.z_reads += uint64_t(c.x1 - c.x0 + 1) * uint64_t(c.y1 - c.y0 + 1);
+        float lowest = zmax;
+        int count = 0;
         bool found = false;
-        for (int y = c.y0; y <= c.y1; ++y)
+        for (int y = c.y0; y <= c.y1; ++y) {
+          const float* row = tile_depth + (y - box.y0) * kBinTileSize - box.x0;
+          const int before = count;
           for (int x = c.x0; x <= c.x1; ++x) {
-            const float d = tile_depth[(y - box.y0) * kBinTileSize + (x - box.x0)];
-            ++work.z_reads;
-            if (d <= 0.0f) continue;
-            ++c.surface_pixels;
-            c.zmin = std::min(c.zmin, d);
-            if (!found) c.sample_x = x, c.sample_y = y, found = true;
+            const float d = row[x];
+            count += d > 0.0f ? 1 : 0;
+            lowest = std::min(lowest, d > 0.0f ? d : zmax);
           }
+          if (found || count == before) continue;
+          found = true;
+          c.sample_y = y;
+          for (c.sample_x = c.x0; !(row[c.sample_x] > 0.0f); ++c.sample_x) {
+          }
+        }
+        c.zmin = lowest;
+        c.surface_pixels = count;
       }
     for (int i = 0; i < per_row_ * per_row_; ++i) {
       const Cell& c = cells_[i];
