@@ -120,6 +120,42 @@ TEST(HierarchicalVolume, SameStencilWithTheLightInTheView) {
   }
 }
 
+// The eye in the plane of a shadow volume's face: a tetrahedron whose edge from (1, 2, -1) to
+// (1, 2, 1) is a silhouette edge for the light at (1, 10, 0), so its quad lies in the plane
+// x = 1, and the eye at x = 1 looking along it. The quad projects to the image's middle column
+// and set-up drops it (ShadowVolumeSet::vanished); the shadow's edge runs along it, through
+// the middle of tiles. If the dropped quad were not kept, no drawn triangle would cross those
+// tiles' boxes and one sample would shadow or light each tile whole.
+TEST(HierarchicalVolume, SameStencilWithAFaceSeenEdgeOn) {
+  Scene scene;
+  scene.name = "edge-on";
+  scene.materials.push_back(Material{});
+  scene.meshes.push_back(makeGroundPlane(vec3(0), 20.0f));
+  Mesh tetra;
+  tetra.name = "tetrahedron";
+  tetra.positions = {{1, 2, -1}, {1, 2, 1}, {0, 3, 0}, {0, 1, 0}};
+  tetra.indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};  // counter-clockwise seen from outside
+  scene.meshes.push_back(tetra);
+  scene.lights.push_back(Light{vec3(1, 10, 0), 0.0f, vec3(1), 1.0f});
+  scene.camera.position = vec3(1, 6, 6);
+  scene.camera.target = vec3(1, 0.5f, 0);
+  scene.camera.fov_y = 50.0f;
+  scene.finalize();
+  ASSERT_TRUE(scene.meshes[1].closed);
+  // 100 pixels wide: the middle column, x = 50, is inside a 32x32 and an 8x8 tile.
+  for (VolumeMode mode : {VolumeMode::ZPass, VolumeMode::ZFail})
+    expectSameStencils(scene, scene.camera.makeView(100, 67), mode, {3, kBinTileLevel},
+                       "edge-on");
+  Stats eye_stats;
+  const View view = scene.camera.makeView(100, 67);
+  const EyeBuffers eye = renderEyePass(scene, view, eye_stats);
+  Stats stats;
+  const ShadowVolumeSet set =
+      buildShadowVolumes(scene, scene.lights[0].center, view, eye, VolumeMode::ZPass, stats);
+  EXPECT_GT(set.vanished_begin[2] - set.vanished_begin[1], 0u)
+      << "the quad seen edge-on should have vanished in set-up";
+}
+
 // Through the technique API: the same visibility bits as `volume`, and counters that do not
 // depend on the thread count or on SIMD vs scalar kernels.
 TEST(HierarchicalVolume, TechniquesMatchVolumeAndCountersAreInvariant) {
@@ -171,13 +207,15 @@ TEST(HierarchicalVolume, SameStencilOnModelScenes) {
 // space: a box over pixels [8, 24) x [8, 24) (tiles (1,1), (2,1), (1,2), (2,2)) whose front face
 // lies at depth 0.8 and back face at 0.2 (its sides are edge-on: no pixel). Each face is two
 // triangles split along the diagonal from (8, 8) to (24, 24); the upper-right triangle comes
-// first. Clip-space w = 1, so screen coordinates and depths are the given ones exactly.
+// first. Clip-space w = 1, so screen coordinates and depths are the given ones exactly. With
+// `sides`, the four edge-on side faces are there too, two triangles each, as a real volume seen
+// with the eye in their planes would have them: set-up drops them (ShadowVolumeSet::vanished).
 struct HandCase {
   ShadowVolumeSet volumes;
   DepthBuffer depth;
 };
 
-HandCase handCase(bool zfail, float (*surface)(int x, int y)) {
+HandCase handCase(bool zfail, float (*surface)(int x, int y), bool sides = false) {
   HandCase c;
   c.depth.depth.resize(32, 32);
   for (int y = 0; y < 32; ++y)
@@ -199,12 +237,26 @@ HandCase handCase(bool zfail, float (*surface)(int x, int y)) {
       tris.add(a, cc, d, 1, flags);
     }
   }
-  c.volumes.triangles = setupTriangles(tris, 32, 32);
+  if (sides) {
+    const float corners[5][2] = {{8, 8}, {24, 8}, {24, 24}, {8, 24}, {8, 8}};
+    for (int k = 0; k < 4; ++k) {
+      const float* p = corners[k];
+      const float* q = corners[k + 1];
+      const uint32_t p0 = vertex(p[0], p[1], 0.8f), q0 = vertex(q[0], q[1], 0.8f);
+      const uint32_t p1 = vertex(p[0], p[1], 0.2f), q1 = vertex(q[0], q[1], 0.2f);
+      tris.add(p0, q0, q1, 1, flags);
+      tris.add(p0, q1, p1, 1, flags);
+    }
+  }
+  std::vector<VanishedPiece> vanished;
+  c.volumes.triangles = setupTriangles(tris, 32, 32, nullptr, &vanished);
   c.volumes.begin = {0, uint32_t(c.volumes.triangles.size())};
   c.volumes.zfail = {uint8_t(zfail)};
   c.volumes.may_contain_eye = {0};
   c.volumes.depth_min = {0.2f};
   c.volumes.depth_max = {0.8f};
+  EXPECT_EQ(vanished.size(), sides ? 8u : 0u) << "only the edge-on sides vanish";
+  indexVanishedPieces(tris, std::move(vanished), c.volumes);
   return c;
 }
 
@@ -318,6 +370,52 @@ TEST(HierarchicalVolume, HandMadeCountersZFailNearSurface) {
   Stats b;
   EXPECT_TRUE(runTiled(eye_inside, VolumeCulling::DepthBounds, b, true) == expected);
   EXPECT_EQ(b.pixels_rasterized, 512u);
+}
+
+// z-pass, the closed box with its edge-on sides, surface at 0.5 between the faces, except
+// background (depth 0, infinity) at pixels (8..9, 8) and (8..11, 9) in tile (1,1).
+//
+// No drawn triangle crosses any tile's box (front face in front, back face behind), so the
+// thesis's test alone would decide the whole bin tile by one sample, its first surface pixel
+// (0, 0), outside the box: all lit, against 1 inside the box per pixel. The sides, dropped by
+// set-up, reach every tile from (0,0) to (3,3) (their pixel boxes take a pixel of margin): the
+// four tiles the faces' rects reach are boundary tiles, and with no tile decided each triangle
+// is drawn over its whole rect after one depth test on the bin tile's range: the back face is
+// culled (behind every depth), the front face's two triangles cover 256 pixels. Tile (1,1)'s
+// stored range reaches 0, and every volume extruded away from the light reaches infinity: its
+// box is taken over its 58 surface pixels instead, at the cost of reading its 64 depths. Wrong
+// if a tile was decided by a sample, if the background stretched a box, or if a background
+// pixel took a count.
+float backgroundInATile(int x, int y) {
+  return (y == 8 && x >= 8 && x < 10) || (y == 9 && x >= 8 && x < 12) ? 0.0f : 0.5f;
+}
+
+TEST(HierarchicalVolume, HandMadeEdgeOnSidesAndBackground) {
+  const HandCase c = handCase(false, backgroundInATile, true);
+  Stats per_pixel_stats;
+  const Image<int32_t> expected = runPerPixel(c, per_pixel_stats);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const bool in_box = x >= 8 && x < 24 && y >= 8 && y < 24;
+      ASSERT_EQ(expected.at(x, y), in_box && backgroundInATile(x, y) > 0.0f ? 1 : 0)
+          << x << "," << y;
+    }
+  for (bool simd : {false, true}) {
+    if (simd && !simdKernelsAvailable()) continue;
+    Stats s;
+    EXPECT_TRUE(runTiled(c, VolumeCulling::Hierarchical, s, simd) == expected);
+    EXPECT_EQ(s.tiles_boundary, 4u);
+    EXPECT_EQ(s.tiles_lit + s.tiles_shadowed, 0u);
+    EXPECT_EQ(s.tiles_accepted, 0u);
+    EXPECT_EQ(s.pixels_rasterized, 256u);
+    EXPECT_EQ(s.z_reads, 256u + 64u);
+  }
+  // Without the sides the volume is not closed on screen, and the one sample decides: the
+  // reason the dropped faces are kept.
+  const HandCase open = handCase(false, backgroundInATile, false);
+  Stats s;
+  EXPECT_TRUE(runTiled(open, VolumeCulling::Hierarchical, s, true) == Image<int32_t>(32, 32, 0));
+  EXPECT_EQ(s.tiles_lit, 4u);
 }
 
 }  // namespace test_hierarchical_volume

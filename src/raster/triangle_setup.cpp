@@ -195,6 +195,50 @@ bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex
   return true;
 }
 
+// Where setupOne dropped a piece on screen (VanishedPiece), from its snapped vertices (the
+// unsnapped ones lie within 1/32 pixel of them). Nothing when it lies off screen or was culled
+// as a back face.
+void recordVanished(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                    int width, int height, uint8_t flags, uint32_t source,
+                    std::vector<VanishedPiece>* vanished) {
+  if (vanished == nullptr || (flags & kCullBackFace)) return;
+  const ScreenVertex* v[3] = {&v0, &v1, &v2};
+  double px[3], py[3];
+  for (int k = 0; k < 3; ++k) {
+    px[k] = double(v[k]->x) / kSubpixelSteps;
+    py[k] = double(v[k]->y) / kSubpixelSteps;
+  }
+  auto length2 = [&](int i, int j) {
+    return (px[i] - px[j]) * (px[i] - px[j]) + (py[i] - py[j]) * (py[i] - py[j]);
+  };
+  int a = 0, b = 1;
+  if (length2(1, 2) > length2(a, b)) a = 1, b = 2;
+  if (length2(0, 2) > length2(a, b)) a = 0, b = 2;
+  const int c = 3 - a - b;
+  // The third vertex's distance from segment a-b (from a when a and b coincide).
+  const double dx = px[b] - px[a], dy = py[b] - py[a], ab2 = dx * dx + dy * dy;
+  const double t =
+      ab2 > 0.0 ? std::clamp(((px[c] - px[a]) * dx + (py[c] - py[a]) * dy) / ab2, 0.0, 1.0) : 0.0;
+  const double off_x = px[a] + t * dx - px[c], off_y = py[a] + t * dy - py[c];
+  const double slack = 1.0 + std::sqrt(off_x * off_x + off_y * off_y);
+  // Pixels x with x + 0.5 within `slack` of the vertices' box, clamped to the image.
+  auto first = [&](double lo) { return std::max(0.0, std::ceil(lo - slack - 0.5)); };
+  auto last = [&](double hi, int size) {
+    return std::min(double(size - 1), std::floor(hi + slack - 0.5));
+  };
+  const double x0 = first(std::min({px[0], px[1], px[2]}));
+  const double y0 = first(std::min({py[0], py[1], py[2]}));
+  const double x1 = last(std::max({px[0], px[1], px[2]}), width);
+  const double y1 = last(std::max({py[0], py[1], py[2]}), height);
+  if (!(x0 <= x1 && y0 <= y1)) return;
+  // The third vertex's depth against the segment's at its projection onto it: depth (1 / w) is
+  // affine in screen space, so a point of the piece, a mix of the three vertices, lies within
+  // that much of the segment's depth where it projects.
+  const double spread = std::fabs(v[c]->depth - (v[a]->depth + t * (v[b]->depth - v[a]->depth)));
+  vanished->push_back({source, px[a], py[a], px[b], py[b], slack, int32_t(x0), int32_t(y0),
+                       int32_t(x1), int32_t(y1), v[a]->depth, v[b]->depth, spread});
+}
+
 SetupTriangle& withOwners(const ClipTriangles& tris, size_t t, SetupTriangle& s) {
   if (!tris.owners.empty()) {
     s.owners[0] = tris.owners[2 * t];
@@ -206,7 +250,8 @@ SetupTriangle& withOwners(const ClipTriangles& tris, size_t t, SetupTriangle& s)
 // Triangles with a vertex outside some plane: clipped in double from the original clip-space
 // vertices, then fanned from the first remaining vertex.
 void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes, int width,
-                  int height, uint8_t flags, std::vector<SetupTriangle>& out) {
+                  int height, uint8_t flags, std::vector<SetupTriangle>& out,
+                  std::vector<VanishedPiece>* vanished) {
   std::array<dvec4, 8> poly;
   for (int k = 0; k < 3; ++k) poly[k] = dvec4(tris.vertex(tris.indices[t * 3 + k]));
   const int count = clipPolygon(poly, 3, planes);
@@ -220,6 +265,9 @@ void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes,
     SetupTriangle s;
     if (setupOne(screen[0], screen[k], screen[k + 1], width, height, tris.payload[t], flags, s))
       out.push_back(withOwners(tris, t, s));
+    else
+      recordVanished(screen[0], screen[k], screen[k + 1], width, height, flags, uint32_t(t),
+                     vanished);
   }
 }
 
@@ -228,7 +276,7 @@ void setupClipped(const ClipTriangles& tris, size_t t, const ClipPlanes& planes,
 template <class VertexFn>
 void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, int height,
                 const ClipPlanes& planes, const VertexFn& vertex, std::vector<SetupTriangle>& out,
-                std::vector<uint32_t>* sources) {
+                std::vector<uint32_t>* sources, std::vector<VanishedPiece>* vanished) {
   // Sets up input triangle t into `out` (none, one, or a clipped fan of pieces).
   const auto setupInput = [&](size_t t) {
     const uint8_t flags = tris.flags.empty() ? 0 : tris.flags[t];
@@ -241,6 +289,9 @@ void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, 
       SetupTriangle s;
       if (setupOne(c0.screen, c1.screen, c2.screen, width, height, tris.payload[t], flags, s))
         out.push_back(withOwners(tris, t, s));
+      else
+        recordVanished(c0.screen, c1.screen, c2.screen, width, height, flags, uint32_t(t),
+                       vanished);
       return;
     }
     // NaN or infinite input covers nothing, and must not crash.
@@ -249,7 +300,7 @@ void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, 
     if ((any & kOutsideBits) == 0) return;
     // All three outside one plane: so is the whole triangle (trivial reject).
     if (c0.code & c1.code & c2.code & kOutsideBits) return;
-    setupClipped(tris, t, planes, width, height, flags, out);
+    setupClipped(tris, t, planes, width, height, flags, out, vanished);
   };
   for (size_t t = begin; t < end; ++t) {
     setupInput(t);
@@ -260,7 +311,8 @@ void setupRange(const ClipTriangles& tris, size_t begin, size_t end, int width, 
 }  // namespace
 
 std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, int height,
-                                          std::vector<uint32_t>* sources) {
+                                          std::vector<uint32_t>* sources,
+                                          std::vector<VanishedPiece>* vanished) {
   PENUMBRA_CHECK(width > 0 && height > 0 && width <= kMaxImageSize && height <= kMaxImageSize,
                  "image size {}x{} is outside 1..{}", width, height, kMaxImageSize);
   PENUMBRA_DCHECK(tris.indices.size() == tris.payload.size() * 3);
@@ -292,6 +344,7 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
   const size_t chunks = (tris.size() + triangle_chunk - 1) / triangle_chunk;
   std::vector<std::vector<SetupTriangle>> parts(chunks);
   std::vector<std::vector<uint32_t>> part_sources(sources != nullptr ? chunks : 0);
+  std::vector<std::vector<VanishedPiece>> part_vanished(vanished != nullptr ? chunks : 0);
   parallelFor(chunks, [&](size_t c) {
     const size_t begin = c * triangle_chunk, end = std::min(tris.size(), begin + triangle_chunk);
     parts[c].reserve(end - begin);
@@ -299,11 +352,13 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
       const ClassifiedVertex* table = classified.get();
       setupRange(tris, begin, end, width, height, planes,
                  [table](uint32_t i) -> const ClassifiedVertex& { return table[i]; }, parts[c],
-                 sources != nullptr ? &part_sources[c] : nullptr);
+                 sources != nullptr ? &part_sources[c] : nullptr,
+                 vanished != nullptr ? &part_vanished[c] : nullptr);
     } else {
       setupRange(tris, begin, end, width, height, planes,
                  [&](uint32_t i) { return classify(tris.vertex(i), planes, width, height); },
-                 parts[c], sources != nullptr ? &part_sources[c] : nullptr);
+                 parts[c], sources != nullptr ? &part_sources[c] : nullptr,
+                 vanished != nullptr ? &part_vanished[c] : nullptr);
     }
   });
   size_t total = 0;
@@ -315,6 +370,10 @@ std::vector<SetupTriangle> setupTriangles(const ClipTriangles& tris, int width, 
     sources->clear();
     sources->reserve(total);
     for (const auto& p : part_sources) sources->insert(sources->end(), p.begin(), p.end());
+  }
+  if (vanished != nullptr) {
+    vanished->clear();
+    for (const auto& p : part_vanished) vanished->insert(vanished->end(), p.begin(), p.end());
   }
   return out;
 }

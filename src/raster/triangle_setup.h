@@ -104,13 +104,36 @@ struct SetupTriangle {
   uint32_t owners[2] = {ClipTriangles::kNoOwner, ClipTriangles::kNoOwner};  // the input's
 };
 
+// A triangle (or a clipped piece of one) on screen that set-up dropped without back-face
+// culling: its snapped vertices are collinear, its box holds no pixel centre, or its depth plane
+// is singular. It draws nothing, but as a face of a closed shadow volume seen edge-on (the eye
+// in its plane) it still separates the volume's inside from its outside on screen, which a
+// pass deciding whole tiles by one sample must know (tiled_volume_stencil.cpp).
+struct VanishedPiece {
+  uint32_t source;  // the input triangle
+  // Where it lies on screen, in pixels (pixel x's centre at x + 0.5), snapped: within `slack`
+  // of the segment (ax, ay)-(bx, by), between its two vertices farthest apart. The slack is one
+  // pixel plus the third vertex's distance from that segment (zero when they are collinear,
+  // as for a face seen edge-on): a long sliver is a segment, not its bounding box.
+  double ax, ay, bx, by, slack;
+  int32_t x0, y0, x1, y1;  // the pixels whose centres lie within `slack` of its vertices' box,
+                           // inclusive, clamped to the image (never empty)
+  // Depths (reversed-Z, unsnapped) at a and b, affine along the segment between (1 / w is affine
+  // along a projected line), and how far the third vertex's depth lies off that: every point
+  // of the piece lies within depth_spread of the segment's depth where it projects. Large for
+  // a face seen edge-on (its depth runs across the line it projects to).
+  double depth_a, depth_b, depth_spread;
+};
+
 // Clips each input triangle to the near plane and the guard band, snaps to 28.4 and sets it up:
 // edge functions from the snapped vertices, the depth plane from the unsnapped ones.
 // Output keeps input order (a clipped triangle's fan pieces stay together), so passes that
 // resolve ties by drawing order are deterministic. Zero-area and off-screen triangles vanish.
 // `sources`, when given, receives for every output triangle the index of the input triangle it
-// came from.
+// came from; `vanished`, when given, every piece on screen that vanished (VanishedPiece), in
+// input order.
 std::vector<SetupTriangle> setupTriangles(const ClipTriangles& triangles, int width, int height,
-                                          std::vector<uint32_t>* sources = nullptr);
+                                          std::vector<uint32_t>* sources = nullptr,
+                                          std::vector<VanishedPiece>* vanished = nullptr);
 
 }  // namespace penumbra

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <cfloat>
+#include <cmath>
 #include <vector>
 
 #include "core/parallel.h"
@@ -148,21 +150,21 @@ class BinTile {
   Cell cells_[kMaxCells];
 };
 
-// True when the segment may meet the tile of pixels [x0, x1] x [y0, y1] (its pixel centres'
-// rectangle, widened by 1/8 pixel for the snapping of the drawn edge, 1/32 pixel at most):
-// Liang-Barsky clipping of the segment to that rectangle.
-bool segmentMeetsTile(const ScreenSegment& s, int x0, int y0, int x1, int y1) {
-  if (s.anywhere) return true;
-  constexpr double kSlack = 0.125;
-  const double lo[2] = {x0 + 0.5 - kSlack, y0 + 0.5 - kSlack};
-  const double hi[2] = {x1 + 0.5 + kSlack, y1 + 0.5 + kSlack};
+// True when segment (sx0, sy0)-(sx1, sy1) (pixels) meets the rectangle of the pixel centres of
+// [x0, x1] x [y0, y1] widened by `slack` pixels: Liang-Barsky clipping, which leaves the part
+// inside as the segment's parameters [t0, t1].
+bool segmentMeetsRect(double sx0, double sy0, double sx1, double sy1, int x0, int y0, int x1,
+                      int y1, double slack, double& t0, double& t1) {
+  const double lo[2] = {x0 + 0.5 - slack, y0 + 0.5 - slack};
+  const double hi[2] = {x1 + 0.5 + slack, y1 + 0.5 + slack};
   // The segment's bounding box first: the silhouette edge is short on screen, its quad long,
   // and most tiles the quad reaches lie well away from the edge.
-  if (std::max(s.x0, s.x1) < lo[0] || std::min(s.x0, s.x1) > hi[0] ||
-      std::max(s.y0, s.y1) < lo[1] || std::min(s.y0, s.y1) > hi[1])
+  if (std::max(sx0, sx1) < lo[0] || std::min(sx0, sx1) > hi[0] || std::max(sy0, sy1) < lo[1] ||
+      std::min(sy0, sy1) > hi[1])
     return false;
-  const double p[2] = {s.x0, s.y0}, d[2] = {s.x1 - s.x0, s.y1 - s.y0};
-  double t0 = 0.0, t1 = 1.0;
+  const double p[2] = {sx0, sy0}, d[2] = {sx1 - sx0, sy1 - sy0};
+  t0 = 0.0;
+  t1 = 1.0;
   for (int a = 0; a < 2; ++a) {
     if (d[a] == 0.0) {
       if (p[a] < lo[a] || p[a] > hi[a]) return false;
@@ -175,6 +177,14 @@ bool segmentMeetsTile(const ScreenSegment& s, int x0, int y0, int x1, int y1) {
     if (t0 > t1) return false;
   }
   return true;
+}
+
+// True when the silhouette segment may meet the tile of pixels [x0, x1] x [y0, y1]: its pixel
+// centres' rectangle, widened by 1/8 pixel for the snapping of the drawn edge (1/32 pixel at
+// most).
+bool segmentMeetsTile(const ScreenSegment& s, int x0, int y0, int x1, int y1) {
+  double t0, t1;
+  return s.anywhere || segmentMeetsRect(s.x0, s.y0, s.x1, s.y1, x0, y0, x1, y1, 0.125, t0, t1);
 }
 
 struct Drawn {
@@ -239,6 +249,43 @@ struct DepthBounds {
   bool zfail, near_test;
 };
 
+// The surface tiles of `tile` (as cell bits) whose boxes a face of volume v that vanished in
+// set-up may cross (ShadowVolumeSet::vanished): seen edge-on, it crosses no box as a drawn
+// triangle would, yet the volume's count can change across it, so one sample cannot decide
+// those tiles. A piece wholly in front of or behind a tile's box acts there as a triangle of
+// that class covering no pixel centre, which changes no count: a tile counts when the piece's
+// part over it (the segment clipped to the tile widened by the slack, its depth range widened
+// by the spread and the float margin of tile_box_test.cpp) reaches the box's depths. The
+// slivers that set-up drops by the dozen (a volume's far triangles, whose two vertices at
+// infinity clip to one guard-band point) lie along their drawn neighbours and rarely do.
+uint64_t vanishedCells(const ShadowVolumeSet& set, size_t v, const BinTile& tile) {
+  if (set.vanished_begin.empty() || set.vanished_begin[v] == set.vanished_begin[v + 1]) return 0;
+  const TileBox& box = tile.box();
+  uint64_t cells = 0;
+  for (uint32_t k = set.vanished_begin[v]; k < set.vanished_begin[v + 1]; ++k) {
+    const VanishedPiece& p = set.vanished[k];
+    const int x0 = std::max(box.x0, p.x0), y0 = std::max(box.y0, p.y0);
+    const int x1 = std::min(box.x1, p.x1), y1 = std::min(box.y1, p.y1);
+    if (x0 > x1 || y0 > y1) continue;
+    const double error =
+        8.0 * FLT_EPSILON * std::max(std::fabs(p.depth_a), std::fabs(p.depth_b)) + 1e-30;
+    for (uint64_t m = tile.cellMask(x0, y0, x1, y1) & tile.surfaceMask(); m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      const Cell& c = tile.cell(i);
+      double t0, t1;
+      if (!segmentMeetsRect(p.ax, p.ay, p.bx, p.by, c.x0, c.y0, c.x1, c.y1, p.slack, t0, t1))
+        continue;
+      const double d0 = p.depth_a + t0 * (p.depth_b - p.depth_a);
+      const double d1 = p.depth_a + t1 * (p.depth_b - p.depth_a);
+      const double margin = p.depth_spread + error;
+      if (std::min(d0, d1) - margin <= double(c.zmax) &&
+          std::max(d0, d1) + margin >= double(c.zmin))
+        cells |= uint64_t(1) << i;
+    }
+  }
+  return cells;
+}
+
 // Depth bounds: the volume's triangles drawn per pixel in the tiles that neither the ordinary
 // depth-rule test (rasterizer.cpp: depthRuleTiles) nor the volume's bounds reject.
 void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
@@ -295,6 +342,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   if (bounds.rejects(tile.zmin(), tile.zmax())) return;
   const TileBox& box = tile.box();
   const uint64_t surface = tile.surfaceMask();
+  // Tiles that a face seen edge-on reaches: never decided by a sample (vanishedCells).
+  const uint64_t edge_on = vanishedCells(set, v, tile);
   // The triangles' rects set up here, with their class against the bin tile's box, kept for
   // the tile walk and the drawing below (one buffer per thread).
   struct Rect {
@@ -355,9 +404,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     forEachCullRect(
         t, e, depth, tile.level(),
         [&](const TileEdges& sub, float zmin, float zmax) {
+          // (The boundary tiles passed the depth bounds test, as the whole bin tile did.)
           if ((tile.cellMask(sub) & boundary) == 0) return 0;
-          // Boundary tiles also take the depth bounds test (a whole bin tile passed it above).
-          if (bounds.rejects(zmin, zmax)) return 0;
           return depthRule(t, sub, zmin, zmax);
         },
         [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work.tally, kWhole);
@@ -402,7 +450,7 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         count += drawn(t).contribution;
       return !crossing;
     });
-    if (!crossing) return decideBinTile(reached, count);
+    if (!crossing && edge_on == 0) return decideBinTile(reached, count);
   }
   // A triangle drawn unclassified, unless its whole depth range lies on the side that never
   // counts.
@@ -457,11 +505,12 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
     // outside the volume, so every surface pixel of the bin tile has one count, the sample's
     // (section 4.3's argument for a tile, made for the bin tile; z-pass's open silhouette
-    // edges made their quads Crossing above). Each tile a rect reaches is decided with that
-    // count, as the tile-by-tile walk below would decide it: its classes would all be
+    // edges made their quads Crossing above, and a face seen edge-on, which set-up dropped,
+    // keeps the tiles it reaches from being decided). Each tile a rect reaches is decided with
+    // that count, as the tile-by-tile walk below would decide it: its classes would all be
     // inherited, and its samples would find the same count. One walk over the rects instead
     // of one per tile.
-    if (!any_crossing) {
+    if (!any_crossing && edge_on == 0) {
       const Cell& s = tile.sampleCell();
       uint64_t reached = 0;
       int32_t count = 0;
@@ -474,7 +523,8 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     }
     if (bin_level) {
       // Tiles as large as the bin tile: the one tile's box is the box just tested, so a
-      // triangle crossing it crosses the tile, and the tile is a boundary tile.
+      // triangle crossing it crosses the tile, and the tile is a boundary tile (as it is when a
+      // face seen edge-on reaches it).
       boundary = surface;
       work.boundary += uint64_t(std::popcount(boundary));
       for (Rect& r : rects)
@@ -491,6 +541,9 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // every tile they reach.
     int32_t sample[kMaxCells];
     std::fill_n(sample, n * n, 0);
+    // Tiles a face seen edge-on reaches are boundary tiles where some rect reaches them.
+    if (edge_on != 0)
+      for (const Rect& r : rects) boundary |= tile.cellMask(r.e) & edge_on;
     uint64_t touched = 0;
     for (const Rect& r : rects) {
       const uint64_t reached = tile.cellMask(r.e) & surface;
@@ -518,13 +571,27 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
         }
       }
     }
+    // The depth bounds test per tile (thesis section 2.2), for the volume as a whole: a
+    // boundary tile whose surfaces it rejects counts nothing from the volume (DepthBounds), so
+    // it is decided, lit. Taken per triangle while drawing, the test would skip the triangles
+    // drawn tile by tile there but not those drawn over their whole rect (draw): a partial sum,
+    // wrong wherever the skipped ones do not cancel (a tile made a boundary tile by a face seen
+    // edge-on need not overlap the volume's depth range at all).
+    uint64_t rejected = 0;
+    for (uint64_t m = boundary; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      if (bounds.rejects(tile.cell(i).zmin, tile.cell(i).zmax)) rejected |= uint64_t(1) << i;
+    }
+    boundary &= ~rejected;
     // The samples of the rects counted over every tile they reach, now that the tiles left to
     // decide are known.
-    decided = touched & ~boundary;
+    decided = (touched | rejected) & ~boundary;
+    for (int i = 0; i < n * n; ++i)
+      if (rejected >> i & 1) sample[i] = 0;
     for (const Rect& r : rects) {
       if (r.whole != counted) continue;
       const int32_t contribution = drawn(*r.t).contribution;
-      for (uint64_t m = tile.cellMask(r.e) & decided; m != 0; m &= m - 1) {
+      for (uint64_t m = tile.cellMask(r.e) & decided & ~rejected; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
         const Cell& c = tile.cell(i);
         if (coversPixel(*r.t, c.sample_x, c.sample_y)) sample[i] += contribution;

@@ -28,6 +28,21 @@ ScreenSegment screenSegment(const vec4& a, const vec4& b, const View& view) {
 
 }  // namespace
 
+void indexVanishedPieces(const ClipTriangles& polygons, std::vector<VanishedPiece> pieces,
+                         ShadowVolumeSet& set) {
+  auto volumeOf = [&](const VanishedPiece& p) {
+    return polygons.owners.empty() ? 0u : polygons.owners[2 * size_t(p.source) + 1];
+  };
+  // A counting sort by volume; set-up gives them in input order, so each volume's stay in it.
+  set.vanished_begin.assign(set.volumeCount() + 1, 0);
+  for (const VanishedPiece& p : pieces) ++set.vanished_begin[volumeOf(p) + 1];
+  for (size_t v = 0; v < set.volumeCount(); ++v)
+    set.vanished_begin[v + 1] += set.vanished_begin[v];
+  set.vanished.resize(pieces.size());
+  std::vector<uint32_t> next(set.vanished_begin.begin(), set.vanished_begin.end() - 1);
+  for (const VanishedPiece& p : pieces) set.vanished[next[volumeOf(p)]++] = p;
+}
+
 ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const View& view,
                                    const EyeBuffers& eye, VolumeMode mode, Stats& stats) {
   PassTimer timer(stats, "silhouette");
@@ -95,8 +110,10 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
       set.silhouettes[i] = screenSegment(eye.clip_vertices[segment_ends[i][0]],
                                          eye.clip_vertices[segment_ends[i][1]], view);
   });
-  set.triangles = setupTriangles(polygons, view.width, view.height);
+  std::vector<VanishedPiece> vanished;
+  set.triangles = setupTriangles(polygons, view.width, view.height, nullptr, &vanished);
   stats.triangles += set.triangles.size();
+  indexVanishedPieces(polygons, std::move(vanished), set);
   set.begin.assign(meshes + 1, 0);
   set.depth_min.assign(meshes, 1.0f);
   set.depth_max.assign(meshes, 0.0f);

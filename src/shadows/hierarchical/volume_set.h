@@ -42,9 +42,21 @@ struct ShadowVolumeSet {
   // the depth bounds of thesis section 2.2 (Figure 2.3).
   std::vector<float> depth_min, depth_max;
   std::vector<ScreenSegment> silhouettes;  // of the z-pass volumes
+  // Per volume, its faces that set-up dropped on screen (VanishedPiece: seen edge-on, with the
+  // eye in their plane): volume v's are vanished[vanished_begin[v] .. vanished_begin[v + 1]).
+  // Such a face draws nothing, so no triangle test finds it crossing a tile, yet the count
+  // changes across it: the tiles it reaches are drawn per pixel (tiled_volume_stencil.cpp).
+  std::vector<VanishedPiece> vanished;
+  std::vector<uint32_t> vanished_begin;
 
   size_t volumeCount() const { return zfail.size(); }
 };
+
+// Files set-up's vanished pieces of `polygons` (the set's input, owners[1] of each its volume;
+// volume 0 when the polygons have no owners) under their volumes, in set.vanished and
+// set.vanished_begin (set.volumeCount() volumes).
+void indexVanishedPieces(const ClipTriangles& polygons, std::vector<VanishedPiece> pieces,
+                         ShadowVolumeSet& set);
 
 // Builds the volumes of every scene mesh for a point light at `centre`; fills the pass
 // "silhouette" and the counters silhouette_edges and triangles of `stats`.
