@@ -97,10 +97,8 @@ void drawDepth(const ClipTriangles& triangles, Image<float>& depth, Image<uint32
     // lie one image row apart, in as many pages.
     // The tile's rows of depth and ids are written when it is done: asked for now
     // (prefetchRow), they arrive while it is drawn.
-    for (int y = box.y0; y <= box.y1; ++y) {
-      prefetchRow(&depth.at(box.x0, y), box.x1 - box.x0 + 1, true);
-      prefetchRow(&primitive.at(box.x0, y), box.x1 - box.x0 + 1, true);
-    }
+    prefetchTileRows(depth, box, true);
+    prefetchTileRows(primitive, box, true);
     TileCopy<float> tile_depth(0.0f);
     TileCopy<uint32_t> tile_primitive(kNoPrimitive);
     DepthTarget target{tile_depth.data(), tile_primitive.data(), kBinTileSize};
@@ -169,8 +167,7 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
     // of 512 bytes: its 32 rows of depth and stencil fall into a sixteenth of the L1 cache sets.
     // The tile's stencil rows are written when it is done: asked for now (prefetchRow), they
     // arrive while it is drawn.
-    for (int y = box.y0; y <= box.y1; ++y)
-      prefetchRow(&stencil.at(box.x0, y), box.x1 - box.x0 + 1, true);
+    prefetchTileRows(stencil, box, true);
     TileCopy<float> tile_depth(depth.depth, box);
     TileCopy<int32_t> tile_stencil(0);  // the caller cleared the stencil: nothing to read
     StencilTarget target{tile_depth.data(), tile_stencil.data(), kBinTileSize};

@@ -33,6 +33,14 @@ void prefetchRow(const T* first, int count, bool write) {
   }
 }
 
+// prefetchRow for every row of `box` in `image`: a pass that reads or writes a bin tile's rows
+// of a frame-sized image after drawing the tile asks for them when the tile starts.
+template <class T>
+void prefetchTileRows(const Image<T>& image, const TileBox& box, bool write) {
+  for (int y = box.y0; y <= box.y1; ++y)
+    prefetchRow(&image.at(box.x0, y), box.x1 - box.x0 + 1, write);
+}
+
 template <class T>
 class TileCopy {
  public:

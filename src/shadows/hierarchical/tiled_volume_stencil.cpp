@@ -157,8 +157,8 @@ bool segmentMeetsRect(double sx0, double sy0, double sx1, double sy1, int x0, in
                       int y1, double slack, double& t0, double& t1) {
   const double lo[2] = {x0 + 0.5 - slack, y0 + 0.5 - slack};
   const double hi[2] = {x1 + 0.5 + slack, y1 + 0.5 + slack};
-  // The segment's bounding box first: the silhouette edge is short on screen, its quad long,
-  // and most tiles the quad reaches lie well away from the edge.
+  // The segment's bounding box first: most tiles tested lie well away from the segment (a
+  // silhouette edge is short on screen, its quad long).
   if (std::max(sx0, sx1) < lo[0] || std::min(sx0, sx1) > hi[0] || std::max(sy0, sy1) < lo[1] ||
       std::min(sy0, sy1) > hi[1])
     return false;
@@ -586,17 +586,16 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // The samples of the rects counted over every tile they reach, now that the tiles left to
     // decide are known.
     decided = (touched | rejected) & ~boundary;
-    for (int i = 0; i < n * n; ++i)
-      if (rejected >> i & 1) sample[i] = 0;
     for (const Rect& r : rects) {
       if (r.whole != counted) continue;
       const int32_t contribution = drawn(*r.t).contribution;
-      for (uint64_t m = tile.cellMask(r.e) & decided & ~rejected; m != 0; m &= m - 1) {
+      for (uint64_t m = tile.cellMask(r.e) & decided; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
         const Cell& c = tile.cell(i);
         if (coversPixel(*r.t, c.sample_x, c.sample_y)) sample[i] += contribution;
       }
     }
+    for (uint64_t m = rejected; m != 0; m &= m - 1) sample[std::countr_zero(m)] = 0;
     work.boundary += uint64_t(std::popcount(boundary));
     for (uint64_t m = decided; m != 0; m &= m - 1) {
       const int i = std::countr_zero(m);
@@ -733,10 +732,8 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
     const TileBox box = binTileBox(bins, index, width, height);
     // The tile's rows of ids and visibility are read and written after its volumes are drawn:
     // asked for now (prefetchRow), they arrive meanwhile.
-    for (int y = box.y0; y <= box.y1; ++y) {
-      prefetchRow(&eye.primitive.at(box.x0, y), box.x1 - box.x0 + 1, false);
-      prefetchRow(&visibility.at(box.x0, y), box.x1 - box.x0 + 1, true);
-    }
+    prefetchTileRows(eye.primitive, box, false);
+    prefetchTileRows(visibility, box, true);
     bool drawn = false;
     alignas(64) int32_t tile_stencil[kBinTileSize * kBinTileSize];
     if (bins.offsets[index] != bins.offsets[index + 1]) {
