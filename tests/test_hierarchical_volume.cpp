@@ -120,6 +120,31 @@ TEST(HierarchicalVolume, SameStencilWithTheLightInTheView) {
   }
 }
 
+// The light below the ground: the ground faces away from it, so its pixels are 0 by the
+// facing rule wherever the stencil is 0, and the sphere's volume reaches few of its tiles. Most
+// bin tiles write no stencil there and are resolved after the tile pass, along the image's
+// rows (tiledVolumeVisibility): a difference from the rule applied to the per-pixel stencil
+// means that resolve lost the facing rule or a tile's place.
+TEST(HierarchicalVolume, SameStencilWithTheLightBelowTheGround) {
+  const Scene scene = sphereOverGround(vec3(4, 5, 6), vec3(0, 1, 0), vec3(1, -3, 2));
+  for (VolumeMode mode : {VolumeMode::Auto, VolumeMode::ZPass, VolumeMode::ZFail})
+    for (const auto& [w, h] : {std::pair{96, 64}, std::pair{200, 134}})
+      expectSameStencils(scene, scene.camera.makeView(w, h), mode, {3, kBinTileLevel},
+                         "light below the ground");
+  // The case is the one described: the facing rule darkens most of the image.
+  const View view = scene.camera.makeView(200, 134);
+  Stats eye_stats;
+  const EyeBuffers eye = renderEyePass(scene, view, eye_stats);
+  const FacingAway away(scene, scene.lights[0], view);
+  size_t facing_away = 0;
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x) {
+      const uint32_t id = eye.primitive.at(x, y);
+      facing_away += id != kNoPrimitive && away(id) ? 1 : 0;
+    }
+  EXPECT_GT(facing_away, size_t(view.width * view.height / 2));
+}
+
 // The eye in the plane of a shadow volume's face: a tetrahedron whose edge from (1, 2, -1) to
 // (1, 2, 1) is a silhouette edge for the light at (1, 10, 0), so its quad lies in the plane
 // x = 1, and the eye at x = 1 looking along it. The quad projects to the image's middle column

@@ -50,6 +50,8 @@ class TileCopy {
       std::copy_n(&image.at(box.x0, y), box.x1 - box.x0 + 1,
                   pixels_ + (y - box.y0) * kBinTileSize);
   }
+  // Uninitialised, for a pass that sets every pixel it stores before storeTo.
+  TileCopy() = default;
   // Every pixel `fill`, for a pass that writes the whole tile.
   explicit TileCopy(T fill) { std::fill_n(pixels_, kBinTileSize * kBinTileSize, fill); }
 
