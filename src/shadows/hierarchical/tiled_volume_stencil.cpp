@@ -5,7 +5,6 @@
 #include <bit>
 #include <cfloat>
 #include <cmath>
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -161,10 +160,10 @@ class BinTile {
 class LazyTileTarget {
  public:
   // `depth_buffer` and `stencil_buffer`: kBinTileSize^2 elements each, left untouched until
-  // get(), which then runs `prepared` (may be empty).
+  // get().
   LazyTileTarget(const Image<float>& depth, const TileBox& box, float* depth_buffer,
-                 int32_t* stencil_buffer, const std::function<void()>& prepared)
-      : depth_(depth), box_(box), depth_copy_(depth_buffer), prepared_(prepared) {
+                 int32_t* stencil_buffer)
+      : depth_(depth), box_(box), depth_copy_(depth_buffer) {
     target_.depth = depth_buffer;
     target_.stencil = stencil_buffer;
     target_.stride = kBinTileSize;
@@ -185,12 +184,10 @@ class LazyTileTarget {
                   depth_copy_ + (y - box_.y0) * kBinTileSize);
     std::fill_n(target_.stencil, kBinTileSize * kBinTileSize, 0);
     ready_ = true;
-    if (prepared_) prepared_();
   }
   const Image<float>& depth_;
   TileBox box_;
   float* depth_copy_;
-  const std::function<void()>& prepared_;
   StencilTarget target_{};
   bool ready_ = false;
 };
@@ -671,12 +668,11 @@ TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
 // untouched and the tile's stencil is all 0.
 bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
                  const TiledVolumeStencilOptions& options, const TileBins& bins, size_t index,
-                 const TileBox& box, float* depth_buffer, int32_t* stencil_buffer, TileWork& w,
-                 const std::function<void()>& prepared = {}) {
+                 const TileBox& box, float* depth_buffer, int32_t* stencil_buffer, TileWork& w) {
   const uint32_t* first = bins.triangles.data() + bins.offsets[index];
   const uint32_t* last = bins.triangles.data() + bins.offsets[index + 1];
   if (first == last) return false;
-  LazyTileTarget target(depth.depth, box, depth_buffer, stencil_buffer, prepared);
+  LazyTileTarget target(depth.depth, box, depth_buffer, stencil_buffer);
   const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
   // The surface ranges of tiles with background are only needed (and read) by Hierarchical.
   const BinTile tile(box, depth, options.tile_level, hierarchical, w);
@@ -777,64 +773,58 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
   visibility.resizeForOverwrite(width, height);
   const TileBins bins = binTriangles(set.triangles, width, height);
   std::vector<TileWork> work(bins.tileCount());
-  // The tiles with stencil 0 (no volume triangle reaches them, or none wrote there: culled by
-  // the depth bounds, decided lit) are most of a frame where the shadows are small: at
-  // 1920x1080 on spheres, 1,790 of 2,040, 834 of them reached by volume triangles that wrote
-  // nothing. Resolved tile by tile, their 32-pixel pieces of rows one image row apart took
-  // about 2.8 times as long per pixel as the per-pixel technique's resolve along whole rows
-  // (bench/README.md). They are resolved a row of bin tiles at a time instead, across each run
-  // of them along the image's rows, by the worker that finishes the row's last tile (no second
-  // parallel pass to wait for).
+  // Each bin tile some volume triangle reaches draws into a stencil slot of its own; the
+  // visibility is resolved a row of bin tiles at a time, along the image's rows, by the worker
+  // that finishes the row's last tile (no second parallel pass to wait for). Resolved tile by
+  // tile instead, each tile's 32-pixel pieces of rows one image row apart took about 2.8 times
+  // as long per pixel as the per-pixel technique's resolve along whole rows (bench/README.md).
+  // Tiles that wrote no stencil (no triangle, or all culled by the depth bounds or decided
+  // lit) are resolved with stencil 0, a run of them at a time: most of a frame where the
+  // shadows are small (at 1920x1080 on spheres, 1,790 of 2,040).
   const size_t tiles_x = size_t(bins.tiles_x);
-  std::vector<uint8_t> unwritten(bins.tileCount(), 0);
+  constexpr size_t kSlot = size_t(kBinTileSize) * kBinTileSize;
+  std::vector<uint32_t> slot(bins.tileCount() + 1, 0);  // prefix over tiles with triangles
+  for (size_t i = 0; i < bins.tileCount(); ++i)
+    slot[i + 1] = slot[i] + (bins.offsets[i] != bins.offsets[i + 1] ? 1 : 0);
+  Image<int32_t> stencils;  // the slots, kSlot pixels each, set only where a tile wrote
+  stencils.resizeForOverwrite(int(kSlot), int(slot.back()));
+  std::vector<uint8_t> written(bins.tileCount(), 0);
   std::unique_ptr<std::atomic<int>[]> row_left(new std::atomic<int>[size_t(bins.tiles_y)]);
   for (int ty = 0; ty < bins.tiles_y; ++ty) row_left[size_t(ty)].store(bins.tiles_x);
-  auto resolveUnwritten = [&](size_t ty) {
+  auto resolveTileRow = [&](size_t ty) {
     const int y0 = int(ty) * kBinTileSize, y1 = std::min(height, y0 + kBinTileSize) - 1;
-    const uint8_t* row_tiles = unwritten.data() + ty * tiles_x;
+    const size_t first_tile = ty * tiles_x;
     for (int y = y0; y <= y1; ++y)
       for (int tx = 0; tx < bins.tiles_x;) {
-        if (!row_tiles[tx]) {
+        const int x0 = tx * kBinTileSize;
+        const size_t tile = first_tile + size_t(tx);
+        if (written[tile]) {
+          const int x1 = std::min(width, x0 + kBinTileSize) - 1;
+          resolveStencilRow(away, &eye.primitive.at(x0, y),
+                            stencils.row(int(slot[tile])) + size_t(y - y0) * kBinTileSize,
+                            &visibility.at(x0, y), x1 - x0 + 1, options.simd);
           ++tx;
           continue;
         }
-        const int x0 = tx * kBinTileSize;
-        while (tx < bins.tiles_x && row_tiles[tx]) ++tx;
+        while (tx < bins.tiles_x && !written[first_tile + size_t(tx)]) ++tx;
         const int x1 = std::min(width, tx * kBinTileSize) - 1;
         resolveStencilRow(away, &eye.primitive.at(x0, y), nullptr, &visibility.at(x0, y),
                           x1 - x0 + 1, options.simd);
       }
   };
-  // Draws and resolves tile `index` if it writes a stencil; true when it did.
-  auto drawAndResolve = [&](size_t index) {
-    if (bins.offsets[index] == bins.offsets[index + 1]) return false;
-    const TileBox box = binTileBox(bins, index, width, height);
-    alignas(64) float depth_buffer[kBinTileSize * kBinTileSize];
-    alignas(64) int32_t tile_stencil[kBinTileSize * kBinTileSize];
-    // The tile's rows of ids and visibility are read and written after its volumes are drawn:
-    // asked for when the first pixel is (prefetchRow), they arrive meanwhile.
-    const std::function<void()> prefetch = [&] {
-      prefetchTileRows(eye.primitive, box, false);
-      prefetchTileRows(visibility, box, true);
-    };
-    if (!drawBinTile(set, depth, options, bins, index, box, depth_buffer, tile_stencil,
-                     work[index], prefetch))
-      return false;
-    // resolveVisibility's rule (facing_away.h): lit where the stencil is 0. Resolved while the
-    // tile's stencil is in the cache.
-    resolveStencilRows(away,
-                       {&eye.primitive.at(box.x0, box.y0), size_t(width), tile_stencil,
-                        size_t(kBinTileSize), &visibility.at(box.x0, box.y0), size_t(width),
-                        box.x1 - box.x0 + 1, box.y1 - box.y0 + 1},
-                       options.simd);
-    return true;
-  };
   parallelFor(bins.tileCount(), [&](size_t index) {
-    if (!drawAndResolve(index)) unwritten[index] = 1;
-    // The flags of the row's tiles are written before the count drops (release) and read by
-    // the worker that brings it to 0 (acquire).
+    if (bins.offsets[index] != bins.offsets[index + 1]) {
+      const TileBox box = binTileBox(bins, index, width, height);
+      alignas(64) float depth_buffer[kBinTileSize * kBinTileSize];
+      written[index] = drawBinTile(set, depth, options, bins, index, box, depth_buffer,
+                                   stencils.row(int(slot[index])), work[index])
+                           ? 1
+                           : 0;
+    }
+    // The row's flags and slots are written before the count drops (release) and read by the
+    // worker that brings it to 0 (acquire).
     const size_t ty = index / tiles_x;
-    if (row_left[ty].fetch_sub(1, std::memory_order_acq_rel) == 1) resolveUnwritten(ty);
+    if (row_left[ty].fetch_sub(1, std::memory_order_acq_rel) == 1) resolveTileRow(ty);
   });
   addCounters(work, stats);
 }
