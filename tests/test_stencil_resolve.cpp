@@ -38,7 +38,8 @@ TEST(StencilResolve, SimdScalarAndTheRuleAgreeOnEveryPixel) {
       // One pixel more than the row: a lane written past the end would change it.
       std::vector<float> simd(size_t(view.width) + 1, -1.0f), scalar(simd);
       resolveStencilRow(away, ids, s, simd.data(), view.width, true);
-      resolveStencilRowsScalar(away, {ids, 0, s, 0, scalar.data(), 0, view.width, 1});
+      const StencilSegment whole{0, view.width, s, 0};
+      resolveStencilRowsScalar(away, {ids, 0, scalar.data(), 0, 1, &whole, 1});
       ASSERT_EQ(simd, scalar) << "row " << y;
       for (int x = 0; x < view.width; ++x) {
         const float rule = resolvedPixel(away, ids[x], [&] {

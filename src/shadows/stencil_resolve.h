@@ -12,17 +12,27 @@
 
 namespace penumbra {
 
-// A block of `rows` rows of n pixels: out from ids (the eye pass's primitive ids) and stencil,
-// each with its own stride in elements between rows (a bin tile's 32 rows inside the frame's
-// images, its stencil a tile-sized copy); a null stencil is all 0 (nothing drawn there).
+// A piece of a block's rows: columns [x0, x0 + n) resolved from `stencil` (its rows
+// `stencil_stride` elements apart, from the block's first row), or with stencil 0 where it is
+// null (nothing drawn there).
+struct StencilSegment {
+  int x0 = 0, n = 0;
+  const int32_t* stencil = nullptr;
+  size_t stencil_stride = 0;
+};
+
+// `rows` rows of out from ids (the eye pass's primitive ids), each with its own stride in
+// elements between rows, every row resolved segment by segment, left to right: a row of bin
+// tiles of frame-sized images, its tiles' stencils in copies of their own or none, in one call
+// (one dispatch for the block, not one per piece).
 struct StencilResolveRows {
   const uint32_t* ids = nullptr;
   size_t ids_stride = 0;
-  const int32_t* stencil = nullptr;
-  size_t stencil_stride = 0;
   float* out = nullptr;
   size_t out_stride = 0;
-  int n = 0, rows = 0;
+  int rows = 0;
+  const StencilSegment* segments = nullptr;
+  size_t count = 0;
 };
 void resolveStencilRows(const FacingAway& away, const StencilResolveRows& block, bool simd);
 void resolveStencilRowsScalar(const FacingAway& away, const StencilResolveRows& block);
@@ -30,7 +40,8 @@ void resolveStencilRowsScalar(const FacingAway& away, const StencilResolveRows& 
 // One row: out[0, n) from ids[0, n) and stencil[0, n).
 inline void resolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_t* stencil,
                               float* out, int n, bool simd) {
-  resolveStencilRows(away, {ids, 0, stencil, 0, out, 0, n, 1}, simd);
+  const StencilSegment segment{0, n, stencil, 0};
+  resolveStencilRows(away, {ids, 0, out, 0, 1, &segment, 1}, simd);
 }
 
 }  // namespace penumbra

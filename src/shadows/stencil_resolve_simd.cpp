@@ -70,11 +70,13 @@ void ResolveStencilRow(const FacingAway& away, const uint32_t* ids, const int32_
 
 void ResolveStencilRowsSimd(const FacingAway& away, const StencilResolveRows& block) {
   for (int y = 0; y < block.rows; ++y)
-    ResolveStencilRow(away, block.ids + size_t(y) * block.ids_stride,
-                      block.stencil != nullptr
-                          ? block.stencil + size_t(y) * block.stencil_stride
-                          : nullptr,
-                      block.out + size_t(y) * block.out_stride, block.n);
+    for (size_t k = 0; k < block.count; ++k) {
+      const StencilSegment& g = block.segments[k];
+      ResolveStencilRow(away, block.ids + size_t(y) * block.ids_stride + g.x0,
+                        g.stencil != nullptr ? g.stencil + size_t(y) * g.stencil_stride
+                                             : nullptr,
+                        block.out + size_t(y) * block.out_stride + g.x0, g.n);
+    }
 }
 
 }  // namespace HWY_NAMESPACE

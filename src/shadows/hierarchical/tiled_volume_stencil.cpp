@@ -794,23 +794,24 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
   auto resolveTileRow = [&](size_t ty) {
     const int y0 = int(ty) * kBinTileSize, y1 = std::min(height, y0 + kBinTileSize) - 1;
     const size_t first_tile = ty * tiles_x;
-    for (int y = y0; y <= y1; ++y)
-      for (int tx = 0; tx < bins.tiles_x;) {
-        const int x0 = tx * kBinTileSize;
-        const size_t tile = first_tile + size_t(tx);
-        if (written[tile]) {
-          const int x1 = std::min(width, x0 + kBinTileSize) - 1;
-          resolveStencilRow(away, &eye.primitive.at(x0, y),
-                            stencils.row(int(slot[tile])) + size_t(y - y0) * kBinTileSize,
-                            &visibility.at(x0, y), x1 - x0 + 1, options.simd);
-          ++tx;
-          continue;
-        }
-        while (tx < bins.tiles_x && !written[first_tile + size_t(tx)]) ++tx;
-        const int x1 = std::min(width, tx * kBinTileSize) - 1;
-        resolveStencilRow(away, &eye.primitive.at(x0, y), nullptr, &visibility.at(x0, y),
-                          x1 - x0 + 1, options.simd);
+    std::vector<StencilSegment> segments;
+    for (int tx = 0; tx < bins.tiles_x;) {
+      const int x0 = tx * kBinTileSize;
+      const size_t tile = first_tile + size_t(tx);
+      if (written[tile]) {
+        const int x1 = std::min(width, x0 + kBinTileSize) - 1;
+        segments.push_back({x0, x1 - x0 + 1, stencils.row(int(slot[tile])), kBinTileSize});
+        ++tx;
+        continue;
       }
+      while (tx < bins.tiles_x && !written[first_tile + size_t(tx)]) ++tx;
+      const int x1 = std::min(width, tx * kBinTileSize) - 1;
+      segments.push_back({x0, x1 - x0 + 1, nullptr, 0});
+    }
+    resolveStencilRows(away,
+                       {eye.primitive.row(y0), size_t(width), visibility.row(y0), size_t(width),
+                        y1 - y0 + 1, segments.data(), segments.size()},
+                       options.simd);
   };
   parallelFor(bins.tileCount(), [&](size_t index) {
     if (bins.offsets[index] != bins.offsets[index + 1]) {
