@@ -114,14 +114,16 @@ TEST(RasterCullTiles, MergedWalkEqualsPerTileWalk) {
   }
 }
 
-// Long slanted triangles, like shadow-volume quads and wedge faces, at any angle and across the
-// guard band.
-ClipTriangles slantedTriangles(int count, int width, int height, uint64_t seed) {
+// Long slanted triangles, like shadow-volume quads and wedge faces, at any angle, starting up to
+// `reach` pixels off the image and up to `longest` pixels long (clipped to the guard band).
+ClipTriangles slantedTriangles(int count, int width, int height, uint64_t seed,
+                               double reach = 100, double longest = 900) {
   TestRandom random(seed);
   ClipTriangles tris;
   for (int t = 0; t < count; ++t) {
-    const double x = random.uniform(-100, width + 100), y = random.uniform(-100, height + 100);
-    const double angle = random.uniform(0, 6.2832), length = random.uniform(5, 900);
+    const double x = random.uniform(-reach, width + reach);
+    const double y = random.uniform(-reach, height + reach);
+    const double angle = random.uniform(0, 6.2832), length = random.uniform(5, longest);
     const double width_px = random.uniform(0.3, 40);
     const double dx = std::cos(angle), dy = std::sin(angle);
     tris.clip.push_back(testing::screenToClip(x, y, 0.5, width, height));
@@ -133,20 +135,17 @@ ClipTriangles slantedTriangles(int count, int width, int height, uint64_t seed) 
   return tris;
 }
 
-// The binner hands a triangle to exactly the bin tiles where setupTileEdges finds it: the
-// passes' tile counters rely on it (forEachCullRect tallies a culled pair without setting up
-// its edges), and a missing tile would lose pixels.
-TEST(RasterCullTiles, BinnerHandsOutExactlyTheTilesTheEdgesMeet) {
-  constexpr int kWidth = 333, kHeight = 210;
-  const std::vector<SetupTriangle> setup =
-      setupTriangles(slantedTriangles(2000, kWidth, kHeight, 3), kWidth, kHeight);
-  const TileBins bins = binTriangles(setup, kWidth, kHeight);
+// Every (triangle, bin tile) pair of `setup` in a width x height image: binned exactly when
+// setupTileEdges finds the triangle in the tile.
+void expectBinnedExactly(const std::vector<SetupTriangle>& setup, int width, int height,
+                         double reach) {
+  const TileBins bins = binTriangles(setup, width, height);
   size_t pairs = 0;
   for (size_t tile = 0; tile < bins.tileCount(); ++tile) {
     const int tx = int(tile % size_t(bins.tiles_x)), ty = int(tile / size_t(bins.tiles_x));
     const int x0 = tx * kBinTileSize, y0 = ty * kBinTileSize;
-    const int x1 = std::min(kWidth, x0 + kBinTileSize) - 1;
-    const int y1 = std::min(kHeight, y0 + kBinTileSize) - 1;
+    const int x1 = std::min(width, x0 + kBinTileSize) - 1;
+    const int y1 = std::min(height, y0 + kBinTileSize) - 1;
     std::vector<bool> binned(setup.size(), false);
     for (uint32_t k = bins.offsets[tile]; k < bins.offsets[tile + 1]; ++k)
       binned[bins.triangles[k]] = true;
@@ -155,11 +154,26 @@ TEST(RasterCullTiles, BinnerHandsOutExactlyTheTilesTheEdgesMeet) {
       const bool meets = setupTileEdges(setup[i], x0, y0, x1, y1, e);
       // If it failed: a tile was handed a triangle it does not hold (counted as a culling test
       // that no per-tile walk would make), or was not handed one it holds (lost pixels).
-      ASSERT_EQ(binned[i], meets) << "triangle " << i << " tile " << tx << "," << ty;
+      ASSERT_EQ(binned[i], meets) << "triangle " << i << " tile " << tx << "," << ty
+                                  << ", reach " << reach;
       pairs += meets;
     }
   }
-  EXPECT_GT(pairs, 2000u);
+  EXPECT_GT(pairs, 2000u) << "reach " << reach;
+}
+
+// The binner hands a triangle to exactly the bin tiles where setupTileEdges finds it: the
+// passes' tile counters rely on it (forEachCullRect tallies a culled pair without setting up
+// its edges), and a missing tile would lose pixels. The second set's triangles run up to 20000
+// pixels, across the guard band, as volume quads extruded to infinity do: their edge values are
+// far larger than a tile's, and the per-row bounds must still be exact to the tile.
+TEST(RasterCullTiles, BinnerHandsOutExactlyTheTilesTheEdgesMeet) {
+  constexpr int kWidth = 333, kHeight = 210;
+  for (const auto& [reach, longest] : {std::pair{100.0, 900.0}, std::pair{300.0, 20000.0}}) {
+    const std::vector<SetupTriangle> setup = setupTriangles(
+        slantedTriangles(2000, kWidth, kHeight, 3, reach, longest), kWidth, kHeight);
+    expectBinnedExactly(setup, kWidth, kHeight, reach);
+  }
 }
 
 // Binning counts and fills its lists in runs of triangles at once: each tile's list must still
