@@ -64,5 +64,61 @@ TEST(StencilResolve, SimdScalarAndTheRuleAgreeOnEveryPixel) {
   EXPECT_GT(lit, 0u);
 }
 
+// A block of rows in segments, as hierarchical-volume resolves a row of bin tiles: pieces with
+// stencils of their own (tile-sized, 32 elements a row) between runs without one, over rows of
+// the frame's images. Each pixel must follow the rule with its own segment's stencil row: a
+// difference means a segment read another's stencil or row, or wrote outside its columns.
+TEST(StencilResolve, SegmentsReadTheirOwnStencilRows) {
+  const Scene scene = builtinScene("columns");
+  const View view = scene.camera.makeView(203, 117);
+  Stats stats;
+  const EyeBuffers eye = renderEyePass(scene, view, stats);
+  const FacingAway away(scene, scene.lights.at(0), view);
+  testing::TestRandom rng(11);
+  constexpr int kRows = 20, kTile = 32;
+  // Columns [0, 203) as: a run without stencil, a 32-wide tile, another, a run, a 11-wide tile.
+  const std::vector<std::pair<int, int>> pieces = {{0, 50}, {50, 32}, {82, 32}, {114, 78},
+                                                   {192, 11}};
+  std::vector<std::vector<int32_t>> tiles(pieces.size());
+  std::vector<StencilSegment> segments;
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const bool own = k == 1 || k == 2 || k == 4;
+    if (own) {
+      tiles[k].resize(size_t(kTile) * kRows);
+      for (int32_t& v : tiles[k]) v = rng.uniform() < 0.5 ? 0 : int32_t(rng.uniform(-3, 3));
+    }
+    segments.push_back({pieces[k].first, pieces[k].second, own ? tiles[k].data() : nullptr,
+                        own ? size_t(kTile) : 0});
+  }
+  const int y0 = 40;
+  for (const bool simd : {true, false}) {
+    Image<float> out(view.width, view.height, -1.0f);
+    const StencilResolveRows block{eye.primitive.row(y0), size_t(view.width), out.row(y0),
+                                   size_t(view.width), kRows, segments.data(), segments.size()};
+    if (simd)
+      resolveStencilRows(away, block, true);
+    else
+      resolveStencilRowsScalar(away, block);
+    for (int y = 0; y < view.height; ++y)
+      for (int x = 0; x < view.width; ++x) {
+        if (y < y0 || y >= y0 + kRows) {
+          ASSERT_EQ(out.at(x, y), -1.0f) << "written outside the block at " << x << ", " << y;
+          continue;
+        }
+        size_t k = 0;
+        while (x >= segments[k].x0 + segments[k].n) ++k;
+        const StencilSegment& g = segments[k];
+        const float rule = resolvedPixel(away, eye.primitive.at(x, y), [&] {
+          return g.stencil != nullptr &&
+                         g.stencil[size_t(y - y0) * g.stencil_stride + size_t(x - g.x0)] != 0
+                     ? 0.0f
+                     : 1.0f;
+        });
+        ASSERT_EQ(out.at(x, y), rule) << (simd ? "simd" : "scalar") << ", pixel " << x << ", "
+                                      << y;
+      }
+  }
+}
+
 }  // namespace test_stencil_resolve
 }  // namespace penumbra

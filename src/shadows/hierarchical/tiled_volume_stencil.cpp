@@ -155,8 +155,8 @@ class BinTile {
 
 // A bin tile's depths copied and its stencil zeroed on first use (TileCopy says why a copy):
 // most bin tiles that some volume triangle reaches draw no pixel (the volume's depth bounds
-// reject the tile, or one sample decides it lit), and copying 32 rows of a frame-sized buffer,
-// one image row apart, cost more than deciding such a tile.
+// reject the tile, or one sample decides it lit), and such a tile then neither reads 32 rows
+// of the frame's depths, one image row apart, nor clears a stencil it would not write.
 class LazyTileTarget {
  public:
   // `depth_buffer` and `stencil_buffer`: kBinTileSize^2 elements each, left untouched until
