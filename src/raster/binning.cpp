@@ -8,13 +8,6 @@
 namespace penumbra {
 namespace {
 
-// floor(a / b) and ceil(a / b) for b > 0 (C++ division truncates toward zero).
-int64_t floorDiv(int64_t a, int64_t b) {
-  const int64_t q = a / b;
-  return (a % b != 0 && a < 0) ? q - 1 : q;
-}
-int64_t ceilDiv(int64_t a, int64_t b) { return -floorDiv(-a, b); }
-
 // The bin tiles of row `ty` that the triangle's pixel box meets and no edge excludes: exactly
 // the tiles where setupRectEdges finds every edge non-negative somewhere in the box's part of
 // the tile (its corner test), so every pair handed out is one the passes draw or cull, never
@@ -46,11 +39,11 @@ bool tileRowSpan(const SetupTriangle& t, int ty, int& cx0, int& cx1) {
     }
     if (one_column) continue;
     if (A > 0) {
-      const int64_t first = ceilDiv(ceilDiv(-k[i], A) - kSubpixelSteps / 2, kSubpixelSteps);
+      const int64_t first = firstPixelFrom(ceilDiv(-k[i], A));
       if (first > t.max_x) return false;
       lo = std::max(lo, floorDiv(first, kBinTileSize));
     } else {
-      const int64_t last = floorDiv(floorDiv(k[i], -A) - kSubpixelSteps / 2, kSubpixelSteps);
+      const int64_t last = lastPixelTo(floorDiv(k[i], -A));
       if (last < t.min_x) return false;
       hi = std::min(hi, floorDiv(last, kBinTileSize));
     }

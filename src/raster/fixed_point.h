@@ -26,4 +26,21 @@ inline constexpr int64_t pixelCentre(int pixel) {
   return int64_t(pixel) * kSubpixelSteps + kSubpixelSteps / 2;
 }
 
+// floor(a / b) and ceil(a / b) for b > 0 (C++ division truncates toward zero).
+inline constexpr int64_t floorDiv(int64_t a, int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+inline constexpr int64_t ceilDiv(int64_t a, int64_t b) {
+  return a >= 0 ? (a + b - 1) / b : -((-a) / b);
+}
+
+// The first pixel whose centre lies at or after `units` (28.4), and the last whose centre lies
+// at or before it.
+inline constexpr int64_t firstPixelFrom(int64_t units) {
+  return ceilDiv(units - kSubpixelSteps / 2, kSubpixelSteps);
+}
+inline constexpr int64_t lastPixelTo(int64_t units) {
+  return floorDiv(units - kSubpixelSteps / 2, kSubpixelSteps);
+}
+
 }  // namespace penumbra

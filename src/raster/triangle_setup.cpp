@@ -148,13 +148,10 @@ bool setupOne(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex
   // before the depth plane's divisions: most triangles that vanish do so here.
   const int64_t min_x = std::min({v0.x, v1.x, v2.x}), max_x = std::max({v0.x, v1.x, v2.x});
   const int64_t min_y = std::min({v0.y, v1.y, v2.y}), max_y = std::max({v0.y, v1.y, v2.y});
-  auto ceil_div = [](int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); };
-  auto floor_div = [](int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
-  const int64_t half = kSubpixelSteps / 2;
-  t.min_x = int32_t(std::max<int64_t>(0, ceil_div(min_x - half, kSubpixelSteps)));
-  t.min_y = int32_t(std::max<int64_t>(0, ceil_div(min_y - half, kSubpixelSteps)));
-  t.max_x = int32_t(std::min<int64_t>(width - 1, floor_div(max_x - half, kSubpixelSteps)));
-  t.max_y = int32_t(std::min<int64_t>(height - 1, floor_div(max_y - half, kSubpixelSteps)));
+  t.min_x = int32_t(std::max<int64_t>(0, firstPixelFrom(min_x)));
+  t.min_y = int32_t(std::max<int64_t>(0, firstPixelFrom(min_y)));
+  t.max_x = int32_t(std::min<int64_t>(width - 1, lastPixelTo(max_x)));
+  t.max_y = int32_t(std::min<int64_t>(height - 1, lastPixelTo(max_y)));
   if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
 
   // Depth plane from the unsnapped vertices, in input order (see SetupTriangle::a). Snapped

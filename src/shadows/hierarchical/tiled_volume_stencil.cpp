@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/parallel.h"
@@ -159,37 +160,29 @@ class BinTile {
 // of the frame's depths, one image row apart, nor clears a stencil it would not write.
 class LazyTileTarget {
  public:
-  // `depth_buffer` and `stencil_buffer`: kBinTileSize^2 elements each, left untouched until
-  // get().
-  LazyTileTarget(const Image<float>& depth, const TileBox& box, float* depth_buffer,
-                 int32_t* stencil_buffer)
-      : depth_(depth), box_(box), depth_copy_(depth_buffer) {
-    target_.depth = depth_buffer;
+  // `stencil_buffer`: kBinTileSize^2 elements, left untouched until get().
+  LazyTileTarget(const Image<float>& depth, const TileBox& box, int32_t* stencil_buffer)
+      : depth_(depth), box_(box) {
     target_.stencil = stencil_buffer;
     target_.stride = kBinTileSize;
     target_.x0 = box.x0;
     target_.y0 = box.y0;
   }
   const StencilTarget& get() {
-    if (!ready_) prepare();
+    if (!depth_copy_) {
+      target_.depth = depth_copy_.emplace(depth_, box_).data();
+      std::fill_n(target_.stencil, kBinTileSize * kBinTileSize, 0);
+    }
     return target_;
   }
   // False while get() has not been called: nothing was drawn, the stencil is all 0.
-  bool ready() const { return ready_; }
+  bool ready() const { return depth_copy_.has_value(); }
 
  private:
-  void prepare() {
-    for (int y = box_.y0; y <= box_.y1; ++y)
-      std::copy_n(&depth_.at(box_.x0, y), box_.x1 - box_.x0 + 1,
-                  depth_copy_ + (y - box_.y0) * kBinTileSize);
-    std::fill_n(target_.stencil, kBinTileSize * kBinTileSize, 0);
-    ready_ = true;
-  }
   const Image<float>& depth_;
   TileBox box_;
-  float* depth_copy_;
+  std::optional<TileCopy<float>> depth_copy_;
   StencilTarget target_{};
-  bool ready_ = false;
 };
 
 // True when segment (sx0, sy0)-(sx1, sy1) (pixels) meets the rectangle of the pixel centres of
@@ -662,17 +655,16 @@ TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
 }
 
 // Draws bin tile `index`'s volumes into `stencil_buffer` (kBinTileSize pixels per row, taken as
-// it is) over a copy of the tile's depths in `depth_buffer` (the same size), both set up only
-// when a pixel or a tile's count is drawn (LazyTileTarget); false when nothing was (no
-// triangle, only background, or every volume culled or decided lit there): the buffers are then
-// untouched and the tile's stencil is all 0.
+// it is) over a copy of the tile's depths, both set up only when a pixel or a tile's count is
+// drawn (LazyTileTarget); false when nothing was (no triangle, only background, or every volume
+// culled or decided lit there): the buffer is then untouched and the tile's stencil is all 0.
 bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
                  const TiledVolumeStencilOptions& options, const TileBins& bins, size_t index,
-                 const TileBox& box, float* depth_buffer, int32_t* stencil_buffer, TileWork& w) {
+                 const TileBox& box, int32_t* stencil_buffer, TileWork& w) {
   const uint32_t* first = bins.triangles.data() + bins.offsets[index];
   const uint32_t* last = bins.triangles.data() + bins.offsets[index + 1];
   if (first == last) return false;
-  LazyTileTarget target(depth.depth, box, depth_buffer, stencil_buffer);
+  LazyTileTarget target(depth.depth, box, stencil_buffer);
   const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
   // The surface ranges of tiles with background are only needed (and read) by Hierarchical.
   const BinTile tile(box, depth, options.tile_level, hierarchical, w);
@@ -751,10 +743,8 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
   parallelFor(bins.tileCount(), [&](size_t index) {
     if (bins.offsets[index] == bins.offsets[index + 1]) return;
     const TileBox box = binTileBox(bins, index, width, height);
-    alignas(64) float depth_buffer[kBinTileSize * kBinTileSize];
     TileCopy<int32_t> tile_stencil;
-    if (drawBinTile(set, depth, options, bins, index, box, depth_buffer, tile_stencil.data(),
-                    work[index]))
+    if (drawBinTile(set, depth, options, bins, index, box, tile_stencil.data(), work[index]))
       tile_stencil.storeTo(stencil, box);
   });
   addCounters(work, stats);
@@ -782,12 +772,9 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
   // lit) are resolved with stencil 0, a run of them at a time: most of a frame where the
   // shadows are small (at 1920x1080 on spheres, 1,790 of 2,040).
   const size_t tiles_x = size_t(bins.tiles_x);
-  constexpr size_t kSlot = size_t(kBinTileSize) * kBinTileSize;
-  std::vector<uint32_t> slot(bins.tileCount() + 1, 0);  // prefix over tiles with triangles
-  for (size_t i = 0; i < bins.tileCount(); ++i)
-    slot[i + 1] = slot[i] + (bins.offsets[i] != bins.offsets[i + 1] ? 1 : 0);
-  Image<int32_t> stencils;  // the slots, kSlot pixels each, set only where a tile wrote
-  stencils.resizeForOverwrite(int(kSlot), int(slot.back()));
+  // Tile i's stencil slot is row i, set only where the tile wrote (untouched memory elsewhere).
+  Image<int32_t> stencils;
+  stencils.resizeForOverwrite(kBinTileSize * kBinTileSize, int(bins.tileCount()));
   std::vector<uint8_t> written(bins.tileCount(), 0);
   std::unique_ptr<std::atomic<int>[]> row_left(new std::atomic<int>[size_t(bins.tiles_y)]);
   for (int ty = 0; ty < bins.tiles_y; ++ty) row_left[size_t(ty)].store(bins.tiles_x);
@@ -795,12 +782,13 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
     const int y0 = int(ty) * kBinTileSize, y1 = std::min(height, y0 + kBinTileSize) - 1;
     const size_t first_tile = ty * tiles_x;
     std::vector<StencilSegment> segments;
+    segments.reserve(tiles_x);
     for (int tx = 0; tx < bins.tiles_x;) {
       const int x0 = tx * kBinTileSize;
       const size_t tile = first_tile + size_t(tx);
       if (written[tile]) {
         const int x1 = std::min(width, x0 + kBinTileSize) - 1;
-        segments.push_back({x0, x1 - x0 + 1, stencils.row(int(slot[tile])), kBinTileSize});
+        segments.push_back({x0, x1 - x0 + 1, stencils.row(int(tile)), kBinTileSize});
         ++tx;
         continue;
       }
@@ -816,11 +804,10 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
   parallelFor(bins.tileCount(), [&](size_t index) {
     if (bins.offsets[index] != bins.offsets[index + 1]) {
       const TileBox box = binTileBox(bins, index, width, height);
-      alignas(64) float depth_buffer[kBinTileSize * kBinTileSize];
-      written[index] = drawBinTile(set, depth, options, bins, index, box, depth_buffer,
-                                   stencils.row(int(slot[index])), work[index])
-                           ? 1
-                           : 0;
+      written[index] =
+          drawBinTile(set, depth, options, bins, index, box, stencils.row(int(index)), work[index])
+              ? 1
+              : 0;
     }
     // The row's flags and slots are written before the count drops (release) and read by the
     // worker that brings it to 0 (acquire).

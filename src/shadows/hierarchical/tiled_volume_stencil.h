@@ -57,10 +57,11 @@ struct TiledVolumeStencilOptions {
 Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& volumes, const DepthBuffer& depth,
                                   const TiledVolumeStencilOptions& options, Stats& stats);
 
-// The same stencil, resolved into `visibility` bin tile by bin tile as resolveVisibility
-// (facing_away.h) resolves it (1 on the background, 0 where the visible triangle faces away
-// from the light or the stencil is non-zero, else 1) while the tile is still in the cache: no
-// frame-sized stencil is cleared, stored and read back. The same counters.
+// The same stencil, resolved into `visibility` as resolveVisibility (facing_away.h) resolves it
+// (1 on the background, 0 where the visible triangle faces away from the light or the stencil
+// is non-zero, else 1) inside the pass, a row of bin tiles at a time along the image's rows:
+// each tile that wrote keeps a stencil of its own, the others read as 0, and no frame-sized
+// stencil is cleared. The same counters.
 void tiledVolumeVisibility(const ShadowVolumeSet& volumes, const EyeBuffers& eye,
                            const FacingAway& away, const TiledVolumeStencilOptions& options,
                            Image<float>& visibility, Stats& stats);
