@@ -21,11 +21,11 @@
 #include <fmt/format.h>
 
 #include "bench_scenes.h"
-#include "timed_frames.h"
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 #include "shadows/reference_options.h"
 #include "shadows/shadow_map_options.h"
 #include "shadows/technique.h"
+#include "timed_frames.h"
 
 namespace penumbra {
 namespace {
@@ -61,10 +61,10 @@ void hardTechnique(benchmark::State& state, const std::string& scene_name, int w
   const double n = double(state.iterations());
   state.counters["technique_ms"] = 1e3 * seconds / n;
   for (const std::string& name : pass_order) state.counters[name + "_ms"] = pass_ms[name] / n;
-  state.counters["light_samples"] = double(last.light_samples);
+  state.counters["light_samples"] = double(last.counter("light_samples"));
   state.counters["tiles_tested"] = double(last.tiles_tested);
   state.counters["tiles_culled"] = double(last.tiles_culled);
-  state.counters["sample_tests"] = double(last.sample_tests);
+  state.counters["sample_tests"] = double(last.counter("sample_tests"));
   state.SetLabel(fmt::format("{} {}x{}, {}", scene_name, width, height, config.describe()));
 }
 

@@ -15,7 +15,7 @@
 
 #include "bench_scenes.h"
 #include "core/parallel.h"
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 
 namespace penumbra {
 namespace {

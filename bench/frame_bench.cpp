@@ -25,13 +25,13 @@
 #include <fmt/format.h>
 
 #include "bench_scenes.h"
-#include "timed_frames.h"
 #include "core/parallel.h"
-#include "render/eye_pass.h"
-#include "shadows/mask_options.h"
+#include "raster/eye_pass.h"
 #include "render/frame.h"
+#include "shadows/mask_options.h"
 #include "shadows/reference/reference_technique.h"
 #include "shadows/technique.h"
+#include "timed_frames.h"
 
 namespace penumbra {
 namespace {
@@ -85,7 +85,7 @@ void hardShadowFrame(benchmark::State& state, const std::string& scene_name, int
   if (technique != "volume") {
     state.counters["z_reads"] = double(last.z_reads);
     state.counters["stencil_writes"] = double(last.stencil_writes);
-    state.counters["tiles_boundary"] = double(last.tiles_boundary);
+    state.counters["tiles_boundary"] = double(last.counter("tiles_boundary"));
   }
   state.SetLabel(fmt::format("{} {}x{} {} tris {} lights, {} (auto): {:.1f} fps", scene_name,
                              width, height, scene.triangleCount(), scene.lights.size(), technique,

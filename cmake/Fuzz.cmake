@@ -1,8 +1,9 @@
 # libFuzzer targets for the mesh loaders (OBJ, PLY, glTF text and binary) and the scene-file reader:
 # penumbra_fuzz_obj, penumbra_fuzz_ply, penumbra_fuzz_gltf, penumbra_fuzz_scene. Clang only
 # (Debian: clang-14, libclang-rt-14-dev); combine with PENUMBRA_SANITIZE=ON for ASan + UBSan.
-# scripts/fuzz.sh configures, builds and runs them. They compile only src/core, src/scene and the image reader,
-# the code under test, with coverage instrumentation, not the whole library.
+# scripts/fuzz.sh configures, builds and runs them. They compile only src/core (with the image
+# reader that scene files' PNG light textures need) and src/scene, the code under test, with
+# coverage instrumentation, not the whole library.
 option(PENUMBRA_BUILD_FUZZ "Build the libFuzzer targets (needs clang)" OFF)
 
 if(PENUMBRA_BUILD_FUZZ)
@@ -11,9 +12,6 @@ if(PENUMBRA_BUILD_FUZZ)
   endif()
   file(GLOB PENUMBRA_FUZZ_LIB_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/core/*.cpp
        ${PROJECT_SOURCE_DIR}/src/scene/*.cpp)
-  # Scene files read PNG light textures (scene/light.h): the image reader comes along.
-  list(APPEND PENUMBRA_FUZZ_LIB_SOURCES ${PROJECT_SOURCE_DIR}/src/render/image_io.cpp
-       ${PROJECT_SOURCE_DIR}/src/render/output_file.cpp)
   add_library(penumbra_fuzz_lib STATIC ${PENUMBRA_FUZZ_LIB_SOURCES})
   target_compile_options(penumbra_fuzz_lib PUBLIC -fsanitize=fuzzer-no-link)
   target_include_directories(penumbra_fuzz_lib

@@ -2,7 +2,7 @@
 // A scene with its view and eye pass, the input every technique test starts from.
 #include <utility>
 
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 #include "scene/scene.h"
 
 namespace penumbra::testing {

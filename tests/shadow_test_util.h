@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "metrics/shadow_boundary.h"
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 #include "scene/generators.h"
 #include "scene/model_sources.h"
 #include "scene/scene.h"

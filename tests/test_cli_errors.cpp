@@ -11,7 +11,7 @@
 
 #include "cli_test_util.h"
 
-#include "render/image_io.h"
+#include "core/image_io.h"
 
 namespace penumbra {
 namespace test_cli_errors {

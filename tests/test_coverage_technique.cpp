@@ -11,13 +11,13 @@
 
 #include "core/parallel.h"
 #include "eye_frame_util.h"
-#include "shadow_test_util.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_file.h"
+#include "shadow_test_util.h"
 #include "shadows/coverage_options.h"
-#include "shadows/facing_away.h"
 #include "shadows/heckbert_herf_options.h"
 #include "shadows/reference_options.h"
+#include "shadows/stages/silhouettes/facing_away.h"
 #include "shadows/technique.h"
 #include "test_scene_util.h"
 

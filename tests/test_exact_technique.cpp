@@ -24,13 +24,13 @@
 #include "scene/generators.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_file.h"
+#include "shadow_test_util.h"
 #include "shadows/exact/exact_technique.h"
 #include "shadows/exact/sample_kernel.h"
-#include "shadows/reference/light_sampling.h"
-#include "shadows/reference/ray_origin.h"
 #include "shadows/reference/reference_technique.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
+#include "shadows/stages/light_sampling/ray_origin.h"
 #include "shadows/technique.h"
-#include "shadow_test_util.h"
 
 namespace penumbra {
 namespace test_exact_technique {

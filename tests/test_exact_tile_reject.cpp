@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "raster/depth_buffer.h"
-#include "shadows/exact/edge_bins.h"
-#include "shadows/exact/edge_screen_test.h"
+#include "shadows/stages/potential_edges/edge_bins.h"
+#include "shadows/stages/potential_edges/edge_screen_test.h"
 
 namespace penumbra {
 namespace test_exact_tile_reject {

@@ -31,8 +31,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "render/frame.h"
 #include "core/stats.h"
+#include "render/frame.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_file.h"
 
@@ -201,8 +201,10 @@ std::string hex(uint64_t value) { return fmt::format("{:016x}", value); }
 
 json countersJson(const Stats& stats) {
   json counters = json::object();
-  // Every counter by its name (core/stats.h); timings are not deterministic: left out.
-  for (const StatsCounter& c : kStatsCounters) counters[c.name] = stats.*c.field;
+  // Every counter by its name, shared or the technique's own; timings are not deterministic:
+  // left out.
+  stats.forEachCounter(
+      [&](const char* name, const char*, uint64_t value) { counters[name] = value; });
   return counters;
 }
 

@@ -7,16 +7,16 @@
 #include <filesystem>
 
 #include "core/parallel.h"
+#include "raster/eye_pass.h"
 #include "raster/fixed_point.h"
 #include "raster/rasterizer.h"
 #include "raster/tile_kernels.h"
-#include "render/eye_pass.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_file.h"
 #include "shadow_test_util.h"
 #include "shadows/hierarchical/tiled_volume_stencil.h"
 #include "shadows/hierarchical/volume_set.h"
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 namespace test_hierarchical_volume {
@@ -340,9 +340,9 @@ TEST(HierarchicalVolume, HandMadeCountersZPass) {
     Stats s;
     const Image<int32_t> stencil = runTiled(c, VolumeCulling::Hierarchical, s, simd);
     EXPECT_TRUE(stencil == expected);
-    EXPECT_EQ(s.tiles_boundary, 2u);
-    EXPECT_EQ(s.tiles_shadowed, 2u);
-    EXPECT_EQ(s.tiles_lit, 0u);
+    EXPECT_EQ(s.counter("tiles_boundary"), 2u);
+    EXPECT_EQ(s.counter("tiles_shadowed"), 2u);
+    EXPECT_EQ(s.counter("tiles_lit"), 0u);
     EXPECT_EQ(s.tiles_accepted, 1u);
     EXPECT_EQ(s.pixels_rasterized, 192u);
     EXPECT_EQ(s.z_reads, 192u);
@@ -379,7 +379,9 @@ TEST(HierarchicalVolume, HandMadeCountersZFailNearSurface) {
   EXPECT_EQ(bounds.stencil_writes, 0u);
   Stats h;
   EXPECT_TRUE(runTiled(c, VolumeCulling::Hierarchical, h, true) == expected);
-  EXPECT_EQ(h.tiles_tested + h.tiles_lit + h.tiles_shadowed + h.tiles_boundary, 0u)
+  EXPECT_EQ(h.tiles_tested + h.counter("tiles_lit") + h.counter("tiles_shadowed") +
+                h.counter("tiles_boundary"),
+            0u)
       << "the bin tile's range lies nearer than the volume: nothing to classify";
   EXPECT_EQ(h.pixels_rasterized + h.z_reads + h.stencil_writes, 0u);
   // Where the eye may be inside the volume, that rejection is not allowed: the tiles are
@@ -388,8 +390,8 @@ TEST(HierarchicalVolume, HandMadeCountersZFailNearSurface) {
   eye_inside.volumes.may_contain_eye = {1};
   Stats e;
   EXPECT_TRUE(runTiled(eye_inside, VolumeCulling::Hierarchical, e, true) == expected);
-  EXPECT_EQ(e.tiles_lit, 4u);
-  EXPECT_EQ(e.tiles_shadowed + e.tiles_boundary, 0u);
+  EXPECT_EQ(e.counter("tiles_lit"), 4u);
+  EXPECT_EQ(e.counter("tiles_shadowed") + e.counter("tiles_boundary"), 0u);
   EXPECT_EQ(e.pixels_rasterized + e.z_reads + e.stencil_writes, 0u);
   // Depth bounds without their near test: every tile drawn per pixel, as the per-pixel pass.
   Stats b;
@@ -429,8 +431,8 @@ TEST(HierarchicalVolume, HandMadeEdgeOnSidesAndBackground) {
     if (simd && !simdKernelsAvailable()) continue;
     Stats s;
     EXPECT_TRUE(runTiled(c, VolumeCulling::Hierarchical, s, simd) == expected);
-    EXPECT_EQ(s.tiles_boundary, 4u);
-    EXPECT_EQ(s.tiles_lit + s.tiles_shadowed, 0u);
+    EXPECT_EQ(s.counter("tiles_boundary"), 4u);
+    EXPECT_EQ(s.counter("tiles_lit") + s.counter("tiles_shadowed"), 0u);
     EXPECT_EQ(s.tiles_accepted, 0u);
     EXPECT_EQ(s.pixels_rasterized, 256u);
     EXPECT_EQ(s.z_reads, 256u + 64u);
@@ -440,7 +442,7 @@ TEST(HierarchicalVolume, HandMadeEdgeOnSidesAndBackground) {
   const HandCase open = handCase(false, backgroundInATile, false);
   Stats s;
   EXPECT_TRUE(runTiled(open, VolumeCulling::Hierarchical, s, true) == Image<int32_t>(32, 32, 0));
-  EXPECT_EQ(s.tiles_lit, 4u);
+  EXPECT_EQ(s.counter("tiles_lit"), 4u);
 }
 
 }  // namespace test_hierarchical_volume
@@ -487,8 +489,8 @@ TEST(HierarchicalVolume, SilhouetteEdgeMakesABoundaryTile) {
   options.dense_limit = 0;
   Stats s;
   EXPECT_TRUE(tiledVolumeStencil(c.volumes, c.depth, options, s) == expected);
-  EXPECT_EQ(s.tiles_boundary, 1u) << "tile (1,1)";
-  EXPECT_EQ(s.tiles_shadowed, 1u) << "tile (2,1)";
+  EXPECT_EQ(s.counter("tiles_boundary"), 1u) << "tile (1,1)";
+  EXPECT_EQ(s.counter("tiles_shadowed"), 1u) << "tile (2,1)";
 }
 
 }  // namespace test_hierarchical_volume

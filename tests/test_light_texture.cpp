@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "render/eye_pass.h"
-#include "render/image_io.h"
+#include "core/image_io.h"
+#include "raster/eye_pass.h"
 #include "render/shading.h"
 #include "render/shading_reuse.h"
 #include "scene/generators.h"

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "render/image_io.h"
+#include "core/image_io.h"
 
 namespace penumbra {
 namespace test_output_exr {

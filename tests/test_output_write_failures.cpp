@@ -13,8 +13,8 @@
 
 #include "cli_test_util.h"
 #include "core/error.h"
-#include "render/image_io.h"
-#include "render/output_file.h"
+#include "core/image_io.h"
+#include "core/output_file.h"
 
 namespace penumbra {
 namespace test_output_write_failures {

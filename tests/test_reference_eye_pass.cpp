@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 #include "scene/generators.h"
 #include "shadows/reference/reference_technique.h"
 #include "test_reference_fixture.h"

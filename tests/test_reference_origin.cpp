@@ -3,7 +3,7 @@
 
 #include "eye_frame_util.h"
 #include "scene/builtin_scenes.h"
-#include "shadows/reference/ray_origin.h"
+#include "shadows/stages/light_sampling/ray_origin.h"
 #include "test_reference_fixture.h"
 
 namespace penumbra {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "shadows/reference/light_sampling.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
 
 namespace penumbra {
 namespace test_reference_sampling {

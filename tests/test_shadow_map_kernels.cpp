@@ -11,7 +11,7 @@
 
 #include "core/simd_dispatch.h"
 #include "shadows/pcss/pcss_kernel.h"
-#include "shadows/shadowmap/map_lookup_kernel.h"
+#include "shadows/stages/light_depth_maps/map_lookup_kernel.h"
 
 namespace penumbra {
 namespace test_shadow_map_kernels {

@@ -10,7 +10,7 @@
 #include "scene/generators.h"
 #include "scene/scene_builder.h"
 #include "shadows/shadow_map_options.h"
-#include "shadows/shadowmap/light_frustum.h"
+#include "shadows/stages/light_depth_maps/light_frustum.h"
 #include "shadows/technique.h"
 
 namespace penumbra {
@@ -59,8 +59,8 @@ TechniqueResult render(const TechniqueConfig& config, const Frame& f) {
 TEST(ShadowMapSpot, StencilLimitSavesExactlyThePixelsOutsideTheFrustum) {
   const Frame f = floorUnderLight(false);
   const TechniqueResult r = render(spotlight(kSpotFov, true), f);
-  EXPECT_EQ(r.stats.shadow_map_lookups, 64u);
-  EXPECT_EQ(r.stats.lookups_saved, 4096u - 64u);
+  EXPECT_EQ(r.stats.counter("shadow_map_lookups"), 64u);
+  EXPECT_EQ(r.stats.counter("lookups_saved"), 4096u - 64u);
   for (int y = 0; y < 64; ++y) {
     for (int x = 0; x < 64; ++x) {
       const bool inside = x >= 28 && x <= 35 && y >= 28 && y <= 35;
@@ -69,8 +69,8 @@ TEST(ShadowMapSpot, StencilLimitSavesExactlyThePixelsOutsideTheFrustum) {
   }
   // Without the limit every floor pixel is looked up and none saved.
   const TechniqueResult all = render(spotlight(kSpotFov, false), f);
-  EXPECT_EQ(all.stats.shadow_map_lookups, 4096u);
-  EXPECT_EQ(all.stats.lookups_saved, 0u);
+  EXPECT_EQ(all.stats.counter("shadow_map_lookups"), 4096u);
+  EXPECT_EQ(all.stats.counter("lookups_saved"), 0u);
 }
 
 // Limited and unlimited lookups give the same image, bit for bit, with an occluder in the spot,
@@ -91,9 +91,10 @@ TEST(ShadowMapSpot, StencilLimitedImageEqualsUnlimited) {
       const TechniqueResult unlimited = render(spotlight(fov, false), f);
       EXPECT_TRUE(limited.visibility == unlimited.visibility)
           << (eye_inside ? "eye inside" : "eye above") << ", fov " << fov;
-      EXPECT_GT(limited.stats.lookups_saved, 0u) << fov;
-      EXPECT_EQ(limited.stats.lookups_saved + limited.stats.shadow_map_lookups,
-                unlimited.stats.shadow_map_lookups);
+      EXPECT_GT(limited.stats.counter("lookups_saved"), 0u) << fov;
+      EXPECT_EQ(limited.stats.counter("lookups_saved") +
+                    limited.stats.counter("shadow_map_lookups"),
+                unlimited.stats.counter("shadow_map_lookups"));
     }
   }
 }

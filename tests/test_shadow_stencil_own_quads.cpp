@@ -11,7 +11,7 @@
 #include "eye_frame_util.h"
 #include "scene/generators.h"
 #include "scene/scene_builder.h"
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 namespace test_shadow_stencil_own_quads {

@@ -7,7 +7,7 @@
 #include "eye_frame_util.h"
 #include "raster/rasterizer.h"
 #include "scene/builtin_scenes.h"
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 namespace test_shadow_stencil_replay {

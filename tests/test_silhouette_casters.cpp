@@ -7,9 +7,9 @@
 #include <numbers>
 #include <vector>
 
-#include "scene/edges.h"
-#include "shadows/silhouette.h"
 #include "open_mesh_util.h"
+#include "scene/edges.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 
 namespace penumbra {
 namespace test_silhouette_casters {

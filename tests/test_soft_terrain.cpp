@@ -14,8 +14,8 @@
 #include "eye_frame_util.h"
 #include "scene/generators.h"
 #include "scene/mesh_ops.h"
-#include "shadows/reference/ray_origin.h"
 #include "shadows/reference_options.h"
+#include "shadows/stages/light_sampling/ray_origin.h"
 #include "shadows/technique.h"
 
 namespace penumbra {

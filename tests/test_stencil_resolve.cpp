@@ -1,12 +1,12 @@
-// The row resolve of a hard stencil (src/shadows/stencil_resolve.h): its SIMD version, its
-// scalar twin and resolvedPixel's rule (facing_away.h) give the same visibility on every pixel
-// (with the SIMD kernels switched off, the scalar twin against the rule).
+// The row resolve of a hard stencil (src/shadows/stages/stencil/stencil_resolve.h): its SIMD
+// version, its scalar twin and resolvedPixel's rule (facing_away.h) give the same visibility on
+// every pixel (with the SIMD kernels switched off, the scalar twin against the rule).
 #include <gtest/gtest.h>
 
+#include "raster/eye_pass.h"
 #include "raster_test_util.h"
-#include "render/eye_pass.h"
 #include "scene/builtin_scenes.h"
-#include "shadows/stencil_resolve.h"
+#include "shadows/stages/stencil/stencil_resolve.h"
 
 namespace penumbra {
 namespace test_stencil_resolve {

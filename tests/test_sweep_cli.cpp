@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli_test_util.h"
-#include "render/image_io.h"
+#include "core/image_io.h"
 
 namespace penumbra {
 namespace test_sweep_cli {

@@ -20,8 +20,8 @@
 #include "scene/builtin_scenes.h"
 #include "scene/generators.h"
 #include "scene/scene_builder.h"
-#include "shadows/facing_away.h"
 #include "shadows/reference/reference_technique.h"
+#include "shadows/stages/silhouettes/facing_away.h"
 #include "shadows/technique.h"
 
 namespace penumbra {

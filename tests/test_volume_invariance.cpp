@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "core/parallel.h"
+#include "raster/eye_pass.h"
 #include "raster/tile_kernels.h"
-#include "render/eye_pass.h"
 #include "scene/builtin_scenes.h"
 #include "shadows/technique.h"
 #include "shadows/volume/volume_technique.h"

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 #include "scene/generators.h"
 #include "scene/normals.h"
 #include "shadows/reference/reference_technique.h"

@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "scene/edges.h"
-#include "shadows/silhouette.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/wedge/wedge.h"
 
 namespace penumbra {

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "scene/edges.h"
-#include "shadows/silhouette.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/wedge/wedge.h"
 
 namespace penumbra {

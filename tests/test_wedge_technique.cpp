@@ -9,18 +9,18 @@
 #include <vector>
 
 #include "core/parallel.h"
+#include "eye_frame_util.h"
+#include "raster/eye_pass.h"
 #include "raster/rasterizer.h"
 #include "raster/tile_kernels.h"
-#include "render/eye_pass.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_file.h"
+#include "shadow_test_util.h"
 #include "shadows/technique.h"
 #include "shadows/volume/volume_technique.h"
-#include "shadows/wedge/wedge_technique.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge_frame.h"
-#include "eye_frame_util.h"
-#include "shadow_test_util.h"
+#include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
 namespace test_wedge_technique {

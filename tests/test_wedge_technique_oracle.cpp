@@ -11,20 +11,20 @@
 #include <string>
 #include <vector>
 
-#include "render/eye_pass.h"
+#include "open_mesh_util.h"
+#include "raster/eye_pass.h"
 #include "scene/builtin_scenes.h"
 #include "scene/generators.h"
 #include "scene/normals.h"
 #include "scene/scene_file.h"
-#include "shadows/silhouette.h"
+#include "shadow_test_util.h"
 #include "shadows/reference/reference_technique.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/technique.h"
-#include "shadows/wedge/wedge_technique.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge.h"
 #include "shadows/wedge/wedge_frame.h"
-#include "open_mesh_util.h"
-#include "shadow_test_util.h"
+#include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
 namespace test_wedge_technique_oracle {

@@ -12,9 +12,9 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/image_io.h"
 #include "metrics/heatmap.h"
 #include "metrics/image_compare.h"
-#include "render/image_io.h"
 
 namespace penumbra::cli {
 namespace {

@@ -40,6 +40,8 @@ void printTechnique(const std::string& name) {
   const TechniqueConfig defaults(info.name);
   std::cout << fmt::format("{} [{}]: {}\n", info.name, claims(info.traits), info.summary);
   if (!info.aliases.empty()) std::cout << fmt::format("also called: {}\n", fmt::join(info.aliases, ", "));
+  for (const CounterSpec& counter : info.counters)
+    std::cout << fmt::format("counts {}: {}\n", counter.name, counter.description);
   if (info.options.specs().empty()) {
     std::cout << "no options\n";
     return;

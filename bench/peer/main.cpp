@@ -15,10 +15,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/image_io.h"
 #include "core/parallel.h"
 #include "headless_gl.h"
 #include "peer_renderer.h"
-#include "render/image_io.h"
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"
 

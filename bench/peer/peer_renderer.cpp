@@ -7,7 +7,7 @@
 #include <meshoptimizer.h>
 
 #include "core/error.h"
-#include "shadows/silhouette.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 
 namespace penumbra {
 namespace {
@@ -205,7 +205,7 @@ PeerRenderer::PeerRenderer(const Scene& scene, const PeerOptions& options)
   gl.volume_light = glGetUniformLocation(gl.volume_program, "u_light");
 
   // Eye-pass geometry: closed meshes first (back faces culled), then open ones (two-sided), as
-  // render/eye_pass.h draws them. Corners are merged where position, normal and material agree,
+  // raster/eye_pass.h draws them. Corners are merged where position, normal and material agree,
   // and each range is reordered for the post-transform vertex cache: what a competent engine
   // ships, and what spares llvmpipe's single-threaded vertex stage.
   std::vector<SceneVertex> corners;
@@ -323,7 +323,7 @@ PeerFrameStats PeerRenderer::renderFrame() {
   PeerFrameStats stats;
   auto start = std::chrono::steady_clock::now();
   const auto drawScene = [&] {
-    // Closed meshes back-face culled, open ones two-sided (render/eye_pass.h).
+    // Closed meshes back-face culled, open ones two-sided (raster/eye_pass.h).
     glEnable(GL_CULL_FACE);
     glDrawElements(GL_TRIANGLES, GLsizei(closed_index_count_), GL_UNSIGNED_INT, nullptr);
     glDisable(GL_CULL_FACE);

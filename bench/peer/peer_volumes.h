@@ -7,10 +7,11 @@
 // point at infinity in the direction away from the light, so a frame only uploads indices.
 //
 // Two caster modes:
-// - two-sided: exactly our renderer's volumes (shadows/silhouette.h): every triangle not edge-on
-//   casts, facing-away ones flipped; a side quad of multiplicity m is drawn |m| times, because the
-//   stencil counts in steps of one and a volume whose sides undercount their weight is not closed
-//   (a lit point whose eye ray leaves through such a side would read -1 and be shadowed).
+// - two-sided: exactly our renderer's volumes (shadows/stages/silhouettes/silhouette.h): every
+//   triangle not edge-on casts, facing-away ones flipped; a side quad of multiplicity m is drawn
+//   |m| times, because the stencil counts in steps of one and a volume whose sides undercount
+//   their weight is not closed (a lit point whose eye ray leaves through such a side would read
+//   -1 and be shadowed).
 // - one-sided: the classic Everitt-Kilgard volume, only light-facing triangles cast. For a closed
 //   mesh with the light outside it, every light-to-point segment crosses as many facing-away
 //   triangles as light-facing ones, so the count is exactly half of the two-sided one: same
@@ -21,7 +22,7 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "shadows/silhouette.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 
 namespace penumbra {
 

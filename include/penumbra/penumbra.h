@@ -29,6 +29,7 @@
 
 #include <penumbra/core/error.h>
 #include <penumbra/core/image.h>
+#include <penumbra/core/image_io.h>
 #include <penumbra/core/math.h>
 #include <penumbra/core/parallel.h>
 #include <penumbra/core/stats.h>
@@ -37,7 +38,6 @@
 #include <penumbra/metrics/image_compare.h>
 #include <penumbra/raster/depth_buffer.h>
 #include <penumbra/render/frame.h>
-#include <penumbra/render/image_io.h>
 #include <penumbra/render/stats_json.h>
 #include <penumbra/scene/builtin_scenes.h>
 #include <penumbra/scene/camera.h>
@@ -48,9 +48,13 @@
 #include <penumbra/scene/mesh.h>
 #include <penumbra/scene/scene.h>
 #include <penumbra/scene/scene_file.h>
+#include <penumbra/scene/up_axis.h>
+#include <penumbra/shadows/alias_free_options.h>
 #include <penumbra/shadows/coverage_options.h>
 #include <penumbra/shadows/exact_options.h>
 #include <penumbra/shadows/heckbert_herf_options.h>
+#include <penumbra/shadows/mask_options.h>
+#include <penumbra/shadows/pcss_options.h>
 #include <penumbra/shadows/reference_options.h>
 #include <penumbra/shadows/shadow_map_options.h>
 #include <penumbra/shadows/technique.h>

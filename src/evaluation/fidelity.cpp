@@ -15,7 +15,7 @@
 #include "core/simd_dispatch.h"
 #include "evaluation/fidelity_strip.h"
 #include "metrics/image_compare.h"
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 #include "render/frame_timing.h"
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/image_io.h"
 #include "metrics/heatmap.h"
-#include "render/image_io.h"
 
 namespace penumbra {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The fidelity page's pictures: technique | oracle | error heat map side by side, shrunk for
-// the page (metrics/heatmap.h colours, render/image_io.h writes).
+// the page (metrics/heatmap.h colours, core/image_io.h writes).
 #include <cstdint>
 #include <string>
 

@@ -14,14 +14,14 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "metrics/image_compare.h"
+#include "raster/eye_pass.h"
 #include "raster/tile_kernels.h"
-#include "render/eye_pass.h"
 #include "render/frame_timing.h"
 #include "render/shading_reuse.h"
 #include "render/stats_json.h"
 #include "scene/builtin_scenes.h"
-#include "shadows/reference/reference_technique.h"
-#include "shadows/wedge/wedge_technique.h"
+#include "shadows/reference_options.h"
+#include "shadows/wedge_options.h"
 
 namespace penumbra {
 namespace {

@@ -5,7 +5,7 @@
 // the baseline of Figure 10a) and the ray-traced oracle (the "50x faster" claim).
 //
 // The evaluation module sits above render and metrics: it runs the frame's pieces
-// (render/eye_pass.h, renderShadows, render/shading_reuse.h) and compares visibilities with
+// (raster/eye_pass.h, renderShadows, render/shading_reuse.h) and compares visibilities with
 // metrics/image_compare.h. evaluation/sweep_report.h summarises and writes what this returns;
 // `penumbra bench` (apps/penumbra/bench_command.cpp) prints it and plots it;
 // docs/reproducing-2004.md reads it against the paper.
@@ -17,7 +17,7 @@
 
 #include "core/stats.h"
 #include "shadows/technique.h"
-#include "shadows/wedge/wedge_culling.h"
+#include "shadows/wedge_options.h"
 
 namespace penumbra {
 

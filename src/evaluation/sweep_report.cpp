@@ -172,11 +172,20 @@ void writeSweepCsv(std::ostream& out, const SweepResult& result) {
   for (const SweepRow& r : result.rows)
     for (const auto& [name, ms] : r.pass_ms)
       if (std::find(passes.begin(), passes.end(), name) == passes.end()) passes.push_back(name);
-  // The counters in the order they are declared (core/stats.h), then the ones derived from
-  // them; the oracle's `rays` counter is `shadow_rays` here, `rays` being its rays per pixel.
+  // The shared counters in the order they are declared (core/stats.h), every technique's own
+  // counter any row reports, then the ones derived from them; the oracle's `rays` counter is
+  // `shadow_rays` here, `rays` being its rays per pixel.
+  std::vector<std::string> counters;
+  for (const StatsCounter& counter : kStatsCounters) counters.push_back(counter.name);
+  for (const SweepRow& r : result.rows) {
+    for (const auto& [spec, value] : r.counters.declared) {
+      if (std::find(counters.begin(), counters.end(), spec->name) == counters.end())
+        counters.push_back(spec->name);
+    }
+  }
   out << "scene,width,height,lights,technique,cull,tile_level,tile_size,rays,runs";
-  for (const StatsCounter& counter : kStatsCounters)
-    out << "," << (std::string(counter.name) == "rays" ? "shadow_rays" : counter.name);
+  for (const std::string& counter : counters)
+    out << "," << (counter == "rays" ? "shadow_rays" : counter);
   out << ",memory_accesses,tile_range_reads,memory_accesses_with_tiles,counters_repeatable,"
          "technique_ms,technique_ms_min,technique_ms_max,technique_cpu_ms";
   for (const std::string& pass : passes) out << "," << passColumn(pass);
@@ -186,7 +195,7 @@ void writeSweepCsv(std::ostream& out, const SweepResult& result) {
     out << fmt::format("{},{},{},{},{},{},{},{},{},{}", csvField(r.scene), r.width, r.height,
                        r.lights, r.techniqueLabel(), cullModeName(r.cull), r.tile_level,
                        r.tile_level > 0 ? 1 << r.tile_level : 0, r.rays, r.runs);
-    for (const StatsCounter& counter : kStatsCounters) out << "," << r.counters.*counter.field;
+    for (const std::string& counter : counters) out << "," << r.counters.counter(counter);
     out << fmt::format(",{},{},{},", r.memoryAccesses(), r.tileRangeReads(),
                        r.memoryAccessesWithTiles());
     out << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f}", r.counters_repeatable ? 1 : 0,

@@ -5,7 +5,7 @@
 
 #include "core/parallel.h"
 #include "core/timer.h"
-#include "render/eye_pass.h"
+#include "raster/eye_pass.h"
 #include "render/shading_kernel.h"
 #include "render/shading_reuse.h"
 

@@ -9,10 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/image_io.h"
+#include "core/output_file.h"
 #include "core/parallel.h"
 #include "core/simd_dispatch.h"
-#include "render/image_io.h"
-#include "render/output_file.h"
 #include "scene/mesh_report.h"
 
 namespace penumbra {
@@ -24,7 +24,7 @@ json statsToJson(const Stats& s) {
   json passes = json::array();
   for (const auto& [name, ms] : s.time_ms) passes.push_back({{"pass", name}, {"ms", ms}});
   json out = json::object();
-  for (const StatsCounter& c : kStatsCounters) out[c.name] = s.*c.field;
+  s.forEachCounter([&](const char* name, const char*, uint64_t value) { out[name] = value; });
   out["time_ms"] = passes;
   out["total_ms"] = s.totalMs();
   return out;
@@ -178,16 +178,15 @@ std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,
     line += fmt::format(", {} {:.1f} ms", name, ms);
   }
   line += fmt::format("; frame {:.1f} ms", result.total.totalMs());
-  // Every counter the frame touched, by its name with spaces (core/stats.h).
+  // Every counter the frame touched, shared or the technique's own, by its name with spaces.
   const char* separator = " | ";
-  for (const StatsCounter& c : kStatsCounters) {
-    const uint64_t value = result.total.*c.field;
-    if (value == 0) continue;
-    std::string name = c.name;
+  result.total.forEachCounter([&](const char* counter, const char*, uint64_t value) {
+    if (value == 0) return;
+    std::string name = counter;
     std::replace(name.begin(), name.end(), '_', ' ');
     line += fmt::format("{}{} {}", separator, name, value);
     separator = ", ";
-  }
+  });
   return line;
 }
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "render/image_io.h"
+#include "core/image_io.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_file_impl.h"
 

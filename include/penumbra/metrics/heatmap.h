@@ -1,5 +1,5 @@
 #pragma once
-// Error and visibility images for people, as 8-bit RGB ready to write (render/image_io.h).
+// Error and visibility images for people, as 8-bit RGB ready to write (core/image_io.h).
 #include <cstdint>
 
 #include <penumbra/core/image.h>
@@ -21,7 +21,7 @@ Image<glm::u8vec3> diffHeatmap(const Image<vec3>& a, const Image<vec3>& b,
                                float max_error_for_scale);
 
 // A visibility buffer as gray: v in [0, 1] -> round(255 v) in every channel (clamped, no
-// transfer curve, like render/image_io.h's gray PNGs).
+// transfer curve, like core/image_io.h's gray PNGs).
 Image<glm::u8vec3> visibilityToImage(const Image<float>& visibility);
 
 }  // namespace penumbra

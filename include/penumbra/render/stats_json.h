@@ -17,8 +17,8 @@ MachineInfo machineInfo();
 // JSON text: scene, image size, technique (name, description, what it claims, and each of its
 // options under the option's name with '_' for '-'), threads, SIMD, machine, the eye
 // pass's stats, per light its stats and mean visibility, and the totals. Stats objects hold
-// every counter of core/stats.h under its own name and "time_ms": [{"pass", "ms"}...] in the
-// order the passes ran, plus "total_ms".
+// every counter (the shared ones of core/stats.h and the technique's own) under its own name and
+// "time_ms": [{"pass", "ms"}...] in the order the passes ran, plus "total_ms".
 std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
                            const FrameResult& result);
 void writeStatsJson(const std::string& path, const Scene& scene, const FrameOptions& options,

@@ -87,6 +87,8 @@ struct TechniqueInfo {
   std::string summary;               // one line for `penumbra techniques`
   TechniqueTraits traits;
   TechniqueOptionTable options;      // its options struct: defaults, specs, checks, description
+  // The counters it declares in its folder and reports besides the shared ones (core/stats.h).
+  std::vector<CounterSpec> counters;
   // Prepares the technique for `scene` with `options` (an object of options.type(), checked).
   std::function<std::unique_ptr<PreparedTechnique>(const std::any& options, const Scene& scene)>
       prepare;

@@ -45,9 +45,10 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
+#include "shadows/aliasfree/alias_free_counters.h"
 #include "shadows/aliasfree/light_grids.h"
 #include "shadows/aliasfree/occluder_test.h"
-#include "shadows/reference/ray_origin.h"
+#include "shadows/stages/light_sampling/ray_origin.h"
 
 namespace penumbra {
 namespace {
@@ -133,6 +134,8 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
   TechniqueResult result;
   result.visibility.resize(width, height, 1.0f);
   Stats& stats = result.stats;
+  stats.count(kLightSamples, 0);  // both counters are reported, zero or not
+  stats.count(kSampleTests, 0);
   const dvec3 centre(light.center);
 
   std::unique_lock<std::mutex> own_scratch(scratch_mutex_, std::try_to_lock);
@@ -188,7 +191,7 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
         sample_pixel[row_first[row] + k] = uint32_t(base) + row_x[base + k];
       }
     });
-    stats.light_samples = d.size();
+    stats.count(kLightSamples, d.size());
   }
   if (d.empty()) return result;
 
@@ -366,7 +369,7 @@ TechniqueResult AliasFree::render(const Light& light, const View& view, const Ey
         result.visibility[sample_pixel[slot_sample[first * kOccluderBlock + slot]]] = 0.0f;
       }
     });
-    for (const uint64_t n : tile_tests) stats.sample_tests += n;
+    for (const uint64_t n : tile_tests) stats.count(kSampleTests, n);
   }
   return result;
 }
@@ -383,6 +386,7 @@ TechniqueInfo aliasFreeTechnique() {
   // The one-ray oracle's answer but for ties on shadow boundaries (tests/test_alias_free.cpp):
   // the same bound as the hard shadow volumes'.
   info.traits.covered_mae_bound = 0.001;
+  info.counters = {kLightSamples, kSampleTests};
   info.options =
       OptionTableBuilder<AliasFreeOptions>()
           .integer("tile-samples",

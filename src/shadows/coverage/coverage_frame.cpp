@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "shadows/reference/light_sampling.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
 
 namespace penumbra {
 

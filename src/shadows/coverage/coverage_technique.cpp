@@ -33,18 +33,19 @@
 #include "core/parallel.h"
 #include "core/pixel_unprojector.h"
 #include "core/timer.h"
-#include "shadows/caster_volume.h"
 #include "shadows/coverage/coverage_frame.h"
 #include "shadows/coverage/coverage_table.h"
 #include "shadows/coverage/disk_coverage_kernel.h"
 #include "shadows/coverage/shape_coverage.h"
 #include "shadows/coverage/square_coverage_kernel.h"
 #include "shadows/coverage/textured_coverage.h"
-#include "shadows/exact/edge_bins.h"
-#include "shadows/exact/edge_screen_test.h"
-#include "shadows/exact/potential_edges.h"
-#include "shadows/facing_away.h"
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/caster_volumes/caster_volume.h"
+#include "shadows/stages/potential_edges/edge_bins.h"
+#include "shadows/stages/potential_edges/edge_screen_test.h"
+#include "shadows/stages/potential_edges/potential_edges.h"
+#include "shadows/stages/silhouettes/facing_away.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 namespace {
@@ -92,7 +93,7 @@ struct CoverageImages {
   ChannelVisibility rgb;  // empty for an untextured light
 };
 
-struct TileWork {
+struct CoverageTileWork {
   uint64_t reads = 0, tests = 0, pairs = 0, inside = 0;
 };
 
@@ -119,7 +120,7 @@ struct PairBatch {
   }
 };
 
-struct Scratch {
+struct CoverageScratch {
   PixelBlock block;
   CoverageFrame frames[kBlockPixels];
   bool framed[kBlockPixels];
@@ -225,12 +226,12 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
       const FacingAway away(scene_, light, view);
       const PixelUnprojector unproject(view);
       const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
-      std::vector<TileWork> tile_work(tiles);
+      std::vector<CoverageTileWork> tile_work(tiles);
       parallelFor(tiles, [&](size_t index) {
-        thread_local std::unique_ptr<Scratch> scratch_slot;
-        if (!scratch_slot) scratch_slot = std::make_unique<Scratch>();
-        Scratch& s = *scratch_slot;
-        TileWork& work = tile_work[index];
+        thread_local std::unique_ptr<CoverageScratch> scratch_slot;
+        if (!scratch_slot) scratch_slot = std::make_unique<CoverageScratch>();
+        CoverageScratch& s = *scratch_slot;
+        CoverageTileWork& work = tile_work[index];
         const EdgeBinTile bin = edgeBinTile(bins, index, width, height);
         const uint32_t* begin = bin.begin;
         const uint32_t* end = bin.end;
@@ -416,7 +417,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
           }
         }
       });
-      for (const TileWork& w : tile_work) {
+      for (const CoverageTileWork& w : tile_work) {
         stats.z_reads += w.reads;
         stats.penumbra_tests += w.pairs;
         stats.penumbra_inside += w.inside;
@@ -486,9 +487,8 @@ TechniqueInfo coverageTechnique() {
   // add up, too dark there, as the wedges' do: 2002 paper, section 8). Bounds: about 1.5x.
   info.traits.covered_mae_bound = 0.012;
   info.traits.penumbra_mae_bound = 0.08;
-  info.options =
-      OptionTableBuilder<CoverageOptions>()
-          .choice("coverage-table",
+  OptionTableBuilder<CoverageOptions> table;
+  table.choice("coverage-table",
                   "per-edge coverage: exact area (analytic), or the paper's 4D coverage table "
                   "with nearest or quadlinear lookup",
                   &CoverageOptions::table,
@@ -497,16 +497,9 @@ TechniqueInfo coverageTechnique() {
                    {"quadlinear", CoverageTable::Quadlinear}})
           .integer("coverage-table-size",
                    "entries per table parameter (n^4 entries; the paper's 32: 1024 x 1024)",
-                   &CoverageOptions::table_size, kMinCoverageTableSize, kMaxCoverageTableSize)
-          .integer(
-              "tile-size", "edge binning tile size in pixels, a power of two in 4..64", 4, 64,
-              [](CoverageOptions& o, int64_t v) {
-                PENUMBRA_CHECK((v & (v - 1)) == 0, "--tile-size {} is not a power of two", v);
-                int level = 0;
-                while ((1 << level) < v) ++level;
-                o.tile_level = level;
-              },
-              [](const CoverageOptions& o) { return int64_t(1) << o.tile_level; })
+                   &CoverageOptions::table_size, kMinCoverageTableSize, kMaxCoverageTableSize);
+  info.options =
+      tileSizeOption(table, "edge binning", &CoverageOptions::tile_level, 2, 6)
           .flag("one-facing",
                 "open meshes cast one facing only (faster where an open mesh faces the light "
                 "both ways, but light passes through its holes)",

@@ -30,17 +30,18 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/timer.h"
-#include "shadows/exact/edge_bins.h"
-#include "shadows/exact/edge_screen_test.h"
 #include "shadows/exact/light_samples.h"
 #include "shadows/exact/pixel_edges.h"
-#include "shadows/exact/potential_edges.h"
 #include "shadows/exact/sample_kernel.h"
 #include "shadows/exact/vertex_rings.h"
-#include "shadows/facing_away.h"
-#include "shadows/reference/light_sampling.h"
-#include "shadows/reference/ray_origin.h"
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
+#include "shadows/stages/light_sampling/ray_origin.h"
+#include "shadows/stages/potential_edges/edge_bins.h"
+#include "shadows/stages/potential_edges/edge_screen_test.h"
+#include "shadows/stages/potential_edges/potential_edges.h"
+#include "shadows/stages/silhouettes/facing_away.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 namespace {
@@ -55,7 +56,7 @@ struct alignas(kSampleAlignment) IntBlock {
 };
 
 // Per-thread scratch of one block of pixels.
-struct Scratch {
+struct ExactScratch {
   std::vector<FloatBlock> x, y;
   std::vector<IntBlock> count;
   std::vector<uint8_t> into;
@@ -69,12 +70,12 @@ struct Scratch {
   std::vector<uint32_t> neighbours;  // of the visible triangle (VertexRings)
   PixelLanes pixel_lanes;             // one edge's candidate pixels (edgeAtPixels)
   EdgeLanes edge_lanes;
-  explicit Scratch(const SortedSamples& s)
+  explicit ExactScratch(const SortedSamples& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
         into(size_t(s.n)), cone_samples(size_t(s.n)) {}
 };
 
-struct TileWork {
+struct ExactTileWork {
   uint64_t reads = 0;   // pixels set up
   uint64_t tests = 0;   // (pixel, edge) pairs given to the quick reject
   uint64_t exact = 0;   // of those, pairs tested exactly
@@ -94,7 +95,7 @@ class ExactSoftShadows final : public PreparedTechnique {
  private:
   float finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
                     const std::vector<const CuttingTriangle*>& cutting, const Light& light,
-                    bool simd, Scratch& scratch) const;
+                    bool simd, ExactScratch& scratch) const;
 
   ExactOptions options_;
   const Scene& scene_;
@@ -106,7 +107,7 @@ class ExactSoftShadows final : public PreparedTechnique {
 
 float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
                                     const std::vector<const CuttingTriangle*>& cutting,
-                                    const Light& light, bool simd, Scratch& scratch) const {
+                                    const Light& light, bool simd, ExactScratch& scratch) const {
   // The count at the centre is a number of triangles crossed, never below 0: a negative
   // stencil, or the visible triangle taken out of a stencil that did not count it (its own
   // quads rasterized past a pixel whose depth-buffer point lies just off it), is rounding of
@@ -252,14 +253,14 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
     };
     // A pixel footprint at unit distance, at the image centre (ray_origin.h).
     const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
-    std::vector<TileWork> tile_work(tiles);
+    std::vector<ExactTileWork> tile_work(tiles);
     ProgressBar progress("exact", tiles, context.show_progress);
     parallelFor(tiles, [&](size_t index) {
-      thread_local std::unique_ptr<Scratch> scratch_slot;
+      thread_local std::unique_ptr<ExactScratch> scratch_slot;
       if (!scratch_slot || scratch_slot->into.size() != size_t(samples_.n))
-        scratch_slot = std::make_unique<Scratch>(samples_);
-      Scratch& scratch = *scratch_slot;
-      TileWork& work = tile_work[index];
+        scratch_slot = std::make_unique<ExactScratch>(samples_);
+      ExactScratch& scratch = *scratch_slot;
+      ExactTileWork& work = tile_work[index];
       const EdgeBinTile bin = edgeBinTile(bins, index, width, height);
       const uint32_t* begin = bin.begin;
       const uint32_t* end = bin.end;
@@ -464,7 +465,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
       progress.add();
     });
     progress.finish();
-    for (const TileWork& w : tile_work) {
+    for (const ExactTileWork& w : tile_work) {
       stats.z_reads += w.reads;
       stats.penumbra_tests += w.exact;
       stats.penumbra_inside += w.inside;
@@ -491,22 +492,14 @@ TechniqueInfo exactTechnique() {
   // penumbra 0.0051-0.0059; twice that is claimed.
   info.traits.covered_mae_bound = 0.003;
   info.traits.penumbra_mae_bound = 0.012;
+  OptionTableBuilder<ExactOptions> table;
+  samplesOption(table, "light samples per pixel (one fixed stratified set)",
+                &ExactOptions::samples, 1, kMaxSamples);
+  seedOption(table,
+             "the sample set (the oracle's --seed with --sample-set fixed gives the same set)",
+             &ExactOptions::seed);
   info.options =
-      OptionTableBuilder<ExactOptions>()
-          .integer("samples", "light samples per pixel (one fixed stratified set)",
-                   &ExactOptions::samples, 1, kMaxSamples)
-          .integer("seed", "random seed of the sample set (the oracle's --seed with "
-                           "--sample-set fixed gives the same set)",
-                   &ExactOptions::seed, 0, INT64_MAX)
-          .integer(
-              "tile-size", "edge binning tile size in pixels, a power of two in 4..64", 4, 64,
-              [](ExactOptions& o, int64_t v) {
-                PENUMBRA_CHECK((v & (v - 1)) == 0, "--tile-size {} is not a power of two", v);
-                int level = 0;
-                while ((1 << level) < v) ++level;
-                o.tile_level = level;
-              },
-              [](const ExactOptions& o) { return int64_t(1) << o.tile_level; })
+      tileSizeOption(table, "edge binning", &ExactOptions::tile_level, 2, 6)
           .check([](const ExactOptions& o) {
             PENUMBRA_CHECK(o.tile_level >= 2 && o.tile_level <= 6,
                            "exact: tile level {} is outside 2..6 (4 to 64 pixels)", o.tile_level);

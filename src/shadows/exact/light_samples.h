@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "shadows/exact/sample_kernel.h"
-#include "shadows/reference/light_sampling.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
 
 namespace penumbra {
 

@@ -7,15 +7,14 @@
 #include "core/math.h"
 #include "core/view.h"
 #include "raster/depth_buffer.h"
-#include "render/eye_pass.h"
 #include "scene/light.h"
 #include "scene/scene.h"
 #include "shadows/exact/light_samples.h"
-#include "shadows/exact/potential_edges.h"
 #include "shadows/exact/sample_kernel.h"
-#include "shadows/reference/light_sampling.h"
-#include "shadows/reference/ray_origin.h"
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
+#include "shadows/stages/light_sampling/ray_origin.h"
+#include "shadows/stages/potential_edges/potential_edges.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 

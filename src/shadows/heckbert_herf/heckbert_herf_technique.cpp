@@ -18,7 +18,8 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "shadows/heckbert_herf/light_points.h"
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 namespace {
@@ -119,12 +120,11 @@ TechniqueInfo heckbertHerfTechnique() {
   // as the disk facing the scene). Bounds: about 1.5x and 2x.
   info.traits.covered_mae_bound = 0.015;
   info.traits.penumbra_mae_bound = 0.08;
+  OptionTableBuilder<HeckbertHerfOptions> table;
+  samplesOption(table, "hard shadow renders averaged, one per stratified light point",
+                &HeckbertHerfOptions::samples, kMinLightPoints, kMaxLightPoints);
   info.options =
-      OptionTableBuilder<HeckbertHerfOptions>()
-          .integer("samples", "hard shadow renders averaged, one per stratified light point",
-                   &HeckbertHerfOptions::samples, kMinLightPoints, kMaxLightPoints)
-          .integer("seed", "random seed of the jitter inside the light's strata",
-                   &HeckbertHerfOptions::seed, 0, INT64_MAX)
+      seedOption(table, "the jitter inside the light's strata", &HeckbertHerfOptions::seed)
           .describe([](const HeckbertHerfOptions& o) {
             return fmt::format("{} samples, seed {}", o.samples, o.seed);
           })

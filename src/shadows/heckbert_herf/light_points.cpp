@@ -1,6 +1,6 @@
 #include "shadows/heckbert_herf/light_points.h"
 
-#include "shadows/reference/light_sampling.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
 
 namespace penumbra {
 

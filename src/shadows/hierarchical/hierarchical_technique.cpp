@@ -4,9 +4,11 @@
 
 #include "core/timer.h"
 #include "raster/fixed_point.h"
-#include "shadows/facing_away.h"
+#include "shadows/hierarchical/tile_class_counters.h"
 #include "shadows/hierarchical/tiled_volume_stencil.h"
 #include "shadows/hierarchical/volume_set.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/silhouettes/facing_away.h"
 #include "shadows/volume_options.h"
 
 namespace penumbra {
@@ -59,20 +61,8 @@ TechniqueInfo tiledVolumeTechnique(const char* name, const char* summary, Volume
   TiledVolumeOptions defaults;
   defaults.tile_level = default_tile_level;
   OptionTableBuilder<TiledVolumeOptions> table(defaults);
-  table
-      .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
-              &TiledVolumeOptions::mode,
-              {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
-               {"zfail", VolumeMode::ZFail}})
-      .integer(
-          "tile-size", "tile size in pixels, a power of two in 4..32", 4, 32,
-          [](TiledVolumeOptions& o, int64_t v) {
-            PENUMBRA_CHECK((v & (v - 1)) == 0, "--tile-size {} is not a power of two", v);
-            int level = 0;
-            while ((1 << level) < v) ++level;
-            o.tile_level = level;
-          },
-          [](const TiledVolumeOptions& o) { return int64_t(1) << o.tile_level; });
+  volumeModeOption(table, &TiledVolumeOptions::mode);
+  tileSizeOption(table, "volume classification", &TiledVolumeOptions::tile_level, 2, 5);
   if (culling == VolumeCulling::Hierarchical)
     table.integer("dense-limit",
                   "a volume with more triangles per 8x8 pixels than this in a 32x32 bin tile "
@@ -92,6 +82,8 @@ TechniqueInfo tiledVolumeTechnique(const char* name, const char* summary, Volume
         return text;
       });
   info.options = table.build();
+  if (culling == VolumeCulling::Hierarchical)
+    info.counters = {kTilesLit, kTilesShadowed, kTilesBoundary};
   info.prepare = [culling](const std::any& options, const Scene& scene) {
     return std::make_unique<TiledVolumes>(std::any_cast<const TiledVolumeOptions&>(options),
                                           culling, scene);

@@ -16,14 +16,15 @@
 #include "raster/tile_copy.h"
 #include "raster/tile_kernels.h"
 #include "shadows/hierarchical/tile_box_test.h"
-#include "shadows/stencil_resolve.h"
+#include "shadows/hierarchical/tile_class_counters.h"
+#include "shadows/stages/stencil/stencil_resolve.h"
 
 namespace penumbra {
 namespace {
 
 constexpr int kMaxCells = (kBinTileSize / 4) * (kBinTileSize / 4);  // 4x4 tiles
 
-struct TileWork {
+struct VolumeTileWork {
   KernelCounts kernel;
   CullTally tally;
   uint64_t z_reads = 0;  // beyond the kernels': surface ranges of tiles with background
@@ -49,7 +50,7 @@ class BinTile {
   // 0) and no depth is read; otherwise the depths of the tiles with background are read from
   // the frame's buffer.
   BinTile(const TileBox& box, const DepthBuffer& depth, int level, bool surface_ranges,
-          TileWork& work)
+          VolumeTileWork& work)
       : box_(box), level_(level), per_row_(kBinTileSize >> level) {
     for (int k = 1; k <= per_row_; ++k)
       rows_[k] = rows_[k - 1] | uint64_t(1) << ((k - 1) * per_row_);
@@ -325,7 +326,7 @@ uint64_t vanishedCells(const ShadowVolumeSet& set, size_t v, const BinTile& tile
 // depth-rule test (rasterizer.cpp: depthRuleTiles) nor the volume's bounds reject.
 void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
                       const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
-                      LazyTileTarget& target, bool simd, TileWork& work) {
+                      LazyTileTarget& target, bool simd, VolumeTileWork& work) {
   const DepthBounds bounds(set, v);
   const bool zfail = bounds.zfail;
   // The test for the whole bin tile first: when it rejects the volume, no triangle of it is set
@@ -353,7 +354,7 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
 void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
                       const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
                       LazyTileTarget& target, const TiledVolumeStencilOptions& options,
-                      int32_t* coarse, TileWork& work) {
+                      int32_t* coarse, VolumeTileWork& work) {
   const bool simd = options.simd;
   const int dense_limit = options.dense_limit;
   const bool zfail = set.zfail[v] != 0;
@@ -660,7 +661,7 @@ TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {
 // culled or decided lit there): the buffer is then untouched and the tile's stencil is all 0.
 bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
                  const TiledVolumeStencilOptions& options, const TileBins& bins, size_t index,
-                 const TileBox& box, int32_t* stencil_buffer, TileWork& w) {
+                 const TileBox& box, int32_t* stencil_buffer, VolumeTileWork& w) {
   const uint32_t* first = bins.triangles.data() + bins.offsets[index];
   const uint32_t* last = bins.triangles.data() + bins.offsets[index + 1];
   if (first == last) return false;
@@ -712,18 +713,25 @@ bool drawBinTile(const ShadowVolumeSet& set, const DepthBuffer& depth,
   return target.ready();
 }
 
-void addCounters(const std::vector<TileWork>& work, Stats& stats) {
-  for (const TileWork& w : work) {
+void addCounters(const std::vector<VolumeTileWork>& work, const TiledVolumeStencilOptions& options,
+                 Stats& stats) {
+  const bool hierarchical = options.culling == VolumeCulling::Hierarchical;
+  uint64_t lit = 0, shadowed = 0, boundary = 0;
+  for (const VolumeTileWork& w : work) {
     stats.pixels_rasterized += w.kernel.covered;
     stats.z_reads += w.kernel.covered + w.z_reads;
     stats.stencil_writes += w.kernel.writes + w.writes;
     stats.tiles_tested += w.tally.tested;
     stats.tiles_culled += w.tally.culled;
-    stats.tiles_lit += w.lit;
-    stats.tiles_shadowed += w.shadowed;
-    stats.tiles_boundary += w.boundary;
     stats.tiles_accepted += w.accepted;
+    lit += w.lit;
+    shadowed += w.shadowed;
+    boundary += w.boundary;
   }
+  if (!hierarchical) return;
+  stats.count(kTilesLit, lit);
+  stats.count(kTilesShadowed, shadowed);
+  stats.count(kTilesBoundary, boundary);
 }
 
 void checkLevel(const TiledVolumeStencilOptions& options) {
@@ -739,7 +747,7 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
   const int width = depth.width(), height = depth.height();
   Image<int32_t> stencil(width, height, 0);
   const TileBins bins = binTriangles(set.triangles, width, height);
-  std::vector<TileWork> work(bins.tileCount());
+  std::vector<VolumeTileWork> work(bins.tileCount());
   parallelFor(bins.tileCount(), [&](size_t index) {
     if (bins.offsets[index] == bins.offsets[index + 1]) return;
     const TileBox box = binTileBox(bins, index, width, height);
@@ -747,7 +755,7 @@ Image<int32_t> tiledVolumeStencil(const ShadowVolumeSet& set, const DepthBuffer&
     if (drawBinTile(set, depth, options, bins, index, box, tile_stencil.data(), work[index]))
       tile_stencil.storeTo(stencil, box);
   });
-  addCounters(work, stats);
+  addCounters(work, options, stats);
   return stencil;
 }
 
@@ -762,7 +770,7 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
                  eye.primitive.height(), width, height);
   visibility.resizeForOverwrite(width, height);
   const TileBins bins = binTriangles(set.triangles, width, height);
-  std::vector<TileWork> work(bins.tileCount());
+  std::vector<VolumeTileWork> work(bins.tileCount());
   // Each bin tile some volume triangle reaches draws into a stencil slot of its own; the
   // visibility is resolved a row of bin tiles at a time, along the image's rows, by the worker
   // that finishes the row's last tile (no second parallel pass to wait for). Resolved tile by
@@ -814,7 +822,7 @@ void tiledVolumeVisibility(const ShadowVolumeSet& set, const EyeBuffers& eye,
     const size_t ty = index / tiles_x;
     if (row_left[ty].fetch_sub(1, std::memory_order_acq_rel) == 1) resolveTileRow(ty);
   });
-  addCounters(work, stats);
+  addCounters(work, options, stats);
 }
 
 }  // namespace penumbra

@@ -1,7 +1,7 @@
 #pragma once
 // The hard shadow volumes' stencil drawn volume by volume, with one of two ways of drawing fewer
-// pixels than the per-pixel passes (shadows/volume/shadow_stencil.cpp), both ending with the
-// same stencil on every pixel that shows a surface:
+// pixels than the per-pixel passes (shadows/stages/stencil/shadow_stencil.cpp), both ending with
+// the same stencil on every pixel that shows a surface:
 //
 // DepthBounds (thesis section 2.2, Figure 2.3; Nvidia's UltraShadow): each volume's depth range;
 //   a volume triangle skips the tiles whose surfaces all lie farther than the volume, with
@@ -23,8 +23,8 @@
 #include "core/image.h"
 #include "core/stats.h"
 #include "raster/depth_buffer.h"
-#include "shadows/facing_away.h"
 #include "shadows/hierarchical/volume_set.h"
+#include "shadows/stages/silhouettes/facing_away.h"
 
 namespace penumbra {
 

@@ -5,7 +5,7 @@
 
 #include "core/parallel.h"
 #include "core/timer.h"
-#include "shadows/caster_volume.h"
+#include "shadows/stages/caster_volumes/caster_volume.h"
 
 namespace penumbra {
 namespace {

@@ -2,7 +2,7 @@
 // The shadow volumes of one point light, one closed volume per caster mesh, set up for the
 // rasterizer and kept apart: the per-volume passes (depth bounds, thesis section 2.2; hierarchical
 // shadow volumes, section 4.3) need to know where one volume ends and the next begins, which the
-// per-pixel stencil (shadows/volume/shadow_stencil.cpp) never does.
+// per-pixel stencil (shadows/stages/stencil/shadow_stencil.cpp) never does.
 #include <cstdint>
 #include <vector>
 

@@ -17,10 +17,11 @@
 #include <fmt/format.h>
 
 #include "core/timer.h"
-#include "render/eye_pass.h"
-#include "shadows/facing_away.h"
+#include "raster/eye_pass.h"
 #include "shadows/mask/mask_magnify.h"
 #include "shadows/mask/shadow_mask.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/silhouettes/facing_away.h"
 
 namespace penumbra {
 
@@ -111,12 +112,9 @@ TechniqueInfo maskTechnique(MaskChannel channel) {
   // (docs/reproducing-hsv-and-masks.md): year2002's block digits and teapot, at the
   // conformance suite's size, give a covered MAE of 0.021 (the other built-in scenes <= 0.001).
   info.traits.covered_mae_bound = 0.025;
+  OptionTableBuilder<MaskOptions> table;
   info.options =
-      OptionTableBuilder<MaskOptions>()
-          .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
-                  &MaskOptions::mode,
-                  {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
-                   {"zfail", VolumeMode::ZFail}})
+      volumeModeOption(table, &MaskOptions::mode)
           .choice("mask-normalisation",
                   "three-pass: start 1/4, normalise by *2, invert, *2 (section 4.3); max-blend: "
                   "start 1, one max rectangle (section 4.4, attenuated shadows only)",

@@ -1,7 +1,7 @@
 #include "shadows/mask/mask_volumes.h"
 
 #include "core/timer.h"
-#include "shadows/caster_volume.h"
+#include "shadows/stages/caster_volumes/caster_volume.h"
 
 namespace penumbra {
 

@@ -40,7 +40,7 @@ struct MaskTile {
   alignas(64) uint8_t bytes[kBinTileSize * kBinTileSize * 4 + kMaskKernelPadding];
 };
 
-struct TileWork {
+struct MaskTileWork {
   KernelCounts kernel;
   CullTally tally;
 };
@@ -70,7 +70,7 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
   {
     PassTimer timer(stats, "mask volumes");
     const TileBins bins = binTriangles(volumes.setup, width, height);
-    std::vector<TileWork> work(bins.tileCount());
+    std::vector<MaskTileWork> work(bins.tileCount());
     const int bytes = mask.bytesPerPixel();
     const bool positive_doubles = maskPositiveDoubles(options.normalisation);
     parallelFor(bins.tileCount(), [&](size_t tile) {
@@ -81,7 +81,7 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
       const TileBox box{tx * kBinTileSize, ty * kBinTileSize,
                         std::min(width, (tx + 1) * kBinTileSize) - 1,
                         std::min(height, (ty + 1) * kBinTileSize) - 1};
-      TileWork& w = work[tile];
+      MaskTileWork& w = work[tile];
       TileCopy<float> tile_depth(depth.depth, box);
       MaskTile tile_mask;
       for (int y = box.y0; y <= box.y1; ++y)
@@ -126,7 +126,7 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
         std::memcpy(mask.pixel(box.x0, y), tile_mask.bytes + size_t(y - box.y0) * kBinTileSize * bytes,
                     size_t(box.x1 - box.x0 + 1) * bytes);
     });
-    for (const TileWork& w : work) {
+    for (const MaskTileWork& w : work) {
       stats.pixels_rasterized += w.kernel.covered;
       stats.z_reads += w.kernel.covered;
       stats.stencil_writes += w.kernel.writes;

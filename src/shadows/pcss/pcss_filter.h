@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "shadows/shadowmap/light_depth_maps.h"
+#include "shadows/stages/light_depth_maps/light_depth_maps.h"
 
 namespace penumbra {
 

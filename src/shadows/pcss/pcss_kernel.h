@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "shadows/shadowmap/map_lookup_kernel.h"
+#include "shadows/stages/light_depth_maps/map_lookup_kernel.h"
 
 namespace penumbra {
 

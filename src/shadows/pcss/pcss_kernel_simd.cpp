@@ -13,7 +13,7 @@
 #include <hwy/foreach_target.h>  // re-includes this file once per target
 #include <hwy/highway.h>
 
-#include "shadows/shadowmap/map_lookup_simd-inl.h"
+#include "shadows/stages/light_depth_maps/map_lookup_simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace penumbra {

@@ -25,9 +25,10 @@
 #include "core/timer.h"
 #include "shadows/pcss/pcss_filter.h"
 #include "shadows/pcss/pcss_kernel.h"
-#include "shadows/shadowmap/light_depth_maps.h"
-#include "shadows/shadowmap/light_frustum.h"
-#include "shadows/shadowmap/shadow_map_lookup.h"
+#include "shadows/stages/light_depth_maps/light_depth_maps.h"
+#include "shadows/stages/light_depth_maps/light_frustum.h"
+#include "shadows/stages/light_depth_maps/lookup_counters.h"
+#include "shadows/stages/light_depth_maps/shadow_map_lookup.h"
 
 namespace penumbra {
 namespace {
@@ -112,6 +113,7 @@ TechniqueInfo pcssTechnique() {
   // multilight 0.0026 / 0.074. The bounds leave half again of the largest.
   info.traits.zero_radius_mae_bound = 0.005;
   info.traits.covered_mae_bound = 0.03;
+  info.counters = {kShadowMapLookups, kLookupsSaved};
   info.traits.penumbra_mae_bound = 0.18;
   info.options =
       OptionTableBuilder<PcssOptions>()

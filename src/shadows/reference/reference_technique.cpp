@@ -13,8 +13,9 @@
 #include "core/progress.h"
 #include "core/timer.h"
 #include "shadows/reference/embree_scene.h"
-#include "shadows/reference/light_sampling.h"
-#include "shadows/reference/ray_origin.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/light_sampling/light_sampling.h"
+#include "shadows/stages/light_sampling/ray_origin.h"
 
 namespace penumbra {
 namespace {
@@ -214,13 +215,10 @@ TechniqueInfo referenceTechnique() {
   // Its own sampling noise against 1024 rays, at the default 256 rays.
   info.traits.covered_mae_bound = 0.01;
   info.traits.penumbra_mae_bound = 0.03;
-  info.options = OptionTableBuilder<ReferenceOptions>()
-                     .integer("rays", "rays per pixel over the light", &ReferenceOptions::rays,
-                              1, kMaxRays)
-                     .flag("hard", "one ray to the light centre, whatever its radius",
-                           &ReferenceOptions::hard)
-                     .integer("seed", "random seed of the ray directions",
-                              &ReferenceOptions::seed, 0, INT64_MAX)
+  OptionTableBuilder<ReferenceOptions> table;
+  table.integer("rays", "rays per pixel over the light", &ReferenceOptions::rays, 1, kMaxRays)
+      .flag("hard", "one ray to the light centre, whatever its radius", &ReferenceOptions::hard);
+  info.options = seedOption(table, "the ray directions", &ReferenceOptions::seed)
                      .choice("sample-set",
                              "light samples: jittered per pixel (pixel), or one set for every "
                              "pixel (fixed: the set `exact` counts, for sample-by-sample "

@@ -11,7 +11,7 @@
 #include "core/view.h"
 #include "raster/depth_buffer.h"
 #include "scene/light.h"
-#include "shadows/shadowmap/light_frustum.h"
+#include "shadows/stages/light_depth_maps/light_frustum.h"
 
 namespace penumbra {
 

@@ -27,11 +27,12 @@
 
 #include "core/error.h"
 #include "core/timer.h"
-#include "shadows/shadowmap/light_depth_maps.h"
-#include "shadows/shadowmap/light_frustum.h"
 #include "shadows/shadowmap/light_frustum_stencil.h"
-#include "shadows/shadowmap/map_lookup_kernel.h"
-#include "shadows/shadowmap/shadow_map_lookup.h"
+#include "shadows/stages/light_depth_maps/light_depth_maps.h"
+#include "shadows/stages/light_depth_maps/light_frustum.h"
+#include "shadows/stages/light_depth_maps/lookup_counters.h"
+#include "shadows/stages/light_depth_maps/map_lookup_kernel.h"
+#include "shadows/stages/light_depth_maps/shadow_map_lookup.h"
 
 namespace penumbra {
 namespace {
@@ -72,7 +73,7 @@ class ShadowMap final : public PreparedTechnique {
           pcfVisibility(face, batch.sx.data(), batch.sy.data(), receiver.data(), kernel, values,
                         batch.padded(), context.simd);
         });
-    stats.z_reads += stats.shadow_map_lookups * uint64_t(kernel) * uint64_t(kernel);
+    stats.z_reads += stats.counter(kShadowMapLookups.name) * uint64_t(kernel) * uint64_t(kernel);
     return result;
   }
 
@@ -96,6 +97,7 @@ TechniqueInfo shadowMapTechnique() {
   // MAE over covered pixels spheres 0.0033, columns 0.0099, fractal 0.0093, year2002 0.0058,
   // multilight 0.0028; the bound leaves half again of the largest.
   info.traits.covered_mae_bound = 0.015;
+  info.counters = {kShadowMapLookups, kLookupsSaved};
   info.options =
       OptionTableBuilder<ShadowMapOptions>()
           .integer("shadow-map-size", "texels along each side of each face (six for a cube)",

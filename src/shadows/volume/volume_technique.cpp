@@ -11,7 +11,8 @@
 // volume both counts are equal, since each closed volume's polygons sum to zero along a ray.
 #include "shadows/volume/volume_technique.h"
 
-#include "shadows/volume/shadow_stencil.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
 namespace {
@@ -43,12 +44,9 @@ TechniqueInfo volumeTechnique() {
   info.summary = "hard shadow volumes from the light centre, z-pass / z-fail per caster";
   // Ties only: pixels whose point lies on a volume polygon, at most a few per frame.
   info.traits.covered_mae_bound = 0.001;
+  OptionTableBuilder<VolumeOptions> table;
   info.options =
-      OptionTableBuilder<VolumeOptions>()
-          .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
-                  &VolumeOptions::mode,
-                  {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
-                   {"zfail", VolumeMode::ZFail}})
+      volumeModeOption(table, &VolumeOptions::mode)
           .flag("one-level-stencil",
                 "every volume pixel depth-tested and written, as the papers' passes (otherwise "
                 "tiles a polygon covers and passes whole take one coarse stencil write)",

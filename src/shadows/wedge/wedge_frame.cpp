@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <optional>
 
+#include "core/error.h"
 #include "core/parallel.h"
 #include "core/pseudo_angle.h"
-#include "core/error.h"
-#include "shadows/caster_volume.h"
-#include "shadows/edge_on_sheet.h"
+#include "shadows/stages/caster_volumes/caster_volume.h"
+#include "shadows/stages/silhouettes/edge_on_sheet.h"
 #include "shadows/wedge/wedge_light_reach.h"
 
 namespace penumbra {

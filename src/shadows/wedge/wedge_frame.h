@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "core/view.h"
-#include "raster/triangle_setup.h"
 #include "raster/depth_buffer.h"
+#include "raster/triangle_setup.h"
 #include "scene/scene.h"
-#include "shadows/caster_volume.h"
+#include "shadows/stages/caster_volumes/caster_volume.h"
 #include "shadows/wedge/wedge.h"
 #include "shadows/wedge/wedge_screen.h"
 

@@ -12,7 +12,7 @@
 
 #include "scene/light.h"
 #include "scene/mesh.h"
-#include "shadows/silhouette.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 
 namespace penumbra {
 

@@ -6,7 +6,7 @@
 
 #include "core/math.h"
 #include "scene/mesh.h"
-#include "shadows/silhouette.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/wedge/wedge.h"
 
 namespace penumbra::wedge_detail {

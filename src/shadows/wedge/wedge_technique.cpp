@@ -31,8 +31,9 @@
 #include "raster/rasterizer.h"
 #include "raster/tile_copy.h"
 #include "raster/tile_offsets.h"
-#include "shadows/edge_on_sheet.h"
-#include "shadows/facing_away.h"
+#include "shadows/shared_options.h"
+#include "shadows/stages/silhouettes/edge_on_sheet.h"
+#include "shadows/stages/silhouettes/facing_away.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
 #include "shadows/wedge/wedge_culling.h"
@@ -42,7 +43,7 @@
 namespace penumbra {
 namespace {
 
-struct TileWork {
+struct WedgeTileWork {
   WedgeKernelCounts umbra, penumbra;
   CullTally tally;
   uint64_t accepted = 0;  // culling tiles whose umbra part went to the coarse level
@@ -62,8 +63,8 @@ size_t binTileCount(int width, int height) {
          size_t((height + kBinTileSize - 1) / kBinTileSize);
 }
 
-void addTileWork(const std::vector<TileWork>& tiles, Stats& stats) {
-  for (const TileWork& t : tiles) {
+void addTileWork(const std::vector<WedgeTileWork>& tiles, Stats& stats) {
+  for (const WedgeTileWork& t : tiles) {
     stats.pixels_rasterized += t.umbra.covered + t.penumbra.covered;
     stats.z_reads += t.umbra.covered + t.penumbra.covered;
     stats.stencil_writes += t.umbra.writes + t.penumbra.writes;
@@ -129,7 +130,7 @@ void forEachWedgeTriangle(const WedgeFrame& frame, std::vector<SetupTriangle> se
                           const EyeBuffers& eye, LiBuffer& li, Stats& stats, int coarse_level,
                           Keep&& keep, Fn&& fn) {
   const int width = li.width(), height = li.height();
-  std::vector<TileWork> work(binTileCount(width, height));
+  std::vector<WedgeTileWork> work(binTileCount(width, height));
   struct Copies {
     Copies(const Image<float>& depth_image, const LiBuffer& li_image, const TileBox& box)
         : depth(depth_image, box), li(li_image, box) {}
@@ -153,7 +154,7 @@ void forEachWedgeTriangle(const WedgeFrame& frame, std::vector<SetupTriangle> se
           }
           return tile_target;
         };
-        TileWork& tw = work[tile.index()];
+        WedgeTileWork& tw = work[tile.index()];
         TileOffsets coarse(coarse_level);
         tile.forEach([&](const SetupTriangle& t, TileEdges& e) { fn(t, e, target, coarse, tw); });
         if (coarse.used()) {
@@ -173,7 +174,7 @@ void penumbraPass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
   const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
   forEachWedgeTriangle(
       frame, std::move(setup), eye, li, stats, options.tile_level, penumbraFace,
-      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, TileWork& tw) {
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, WedgeTileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         WedgeKernelWork k;
         k.wedge = &frame.screen[size_t(role.wedge)];
@@ -202,7 +203,7 @@ void singlePass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
         return role.umbra_weight != 0 || penumbraFace(role, t);
       },
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets& coarse,
-          TileWork& tw) {
+          WedgeTileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         const bool has_penumbra = penumbraFace(role, t);
         const ScreenWedge* wedge = has_penumbra ? &frame.screen[size_t(role.wedge)] : nullptr;
@@ -258,7 +259,7 @@ void original2002(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
       [&](const WedgeRole& role, const SetupTriangle& t) {
         return entry(role, t) || role.umbra_weight != 0;
       },
-      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, TileWork& tw) {
+      [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, WedgeTileWork& tw) {
         const WedgeRole& role = frame.roles[size_t(t.payload)];
         if (!setupRectEdges(t, e)) return;
         ++tw.tally.tested;
@@ -408,14 +409,6 @@ class PenumbraWedges final : public PreparedTechnique {
   const Scene& scene_;
 };
 
-// Culling tiles are 2^level pixels wide; the options speak of the size in pixels.
-int tileLevelOfSize(int64_t size, const std::string& what) {
-  for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level)
-    if (size == int64_t(1) << level) return level;
-  throw Error(fmt::format("{} {} is not a power of two in {}..{}", what, size, 1 << kMinTileLevel,
-                          1 << kMaxTileLevel));
-}
-
 }  // namespace
 
 TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm) {
@@ -448,19 +441,11 @@ TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm) {
                          "stencil, then penumbra), tile culling, z-fail"
                        : "penumbra wedges, 2004 restructured algorithm, one pass over umbra and "
                          "penumbra, tile culling, z-fail";
-    options
-        .choice("volume-mode", "count from the eye (zpass), from infinity (zfail), or auto",
-                &WedgeOptions::volume_mode,
-                {{"auto", VolumeMode::Auto}, {"zpass", VolumeMode::ZPass},
-                 {"zfail", VolumeMode::ZFail}})
+    volumeModeOption(options, &WedgeOptions::volume_mode)
         .choice("cull", "tile culling: none, zmax (z-max only) or full (z-min and z-max)",
                 &WedgeOptions::cull,
-                {{"none", CullMode::None}, {"zmax", CullMode::ZMax}, {"full", CullMode::Full}})
-        .integer(
-            "tile-size", "culling tile size in pixels, a power of two in 2..256",
-            1 << kMinTileLevel, 1 << kMaxTileLevel,
-            [](WedgeOptions& o, int64_t size) { o.tile_level = tileLevelOfSize(size, "--tile-size"); },
-            [](const WedgeOptions& o) { return int64_t(1) << o.tile_level; })
+                {{"none", CullMode::None}, {"zmax", CullMode::ZMax}, {"full", CullMode::Full}});
+    tileSizeOption(options, "culling", &WedgeOptions::tile_level, kMinTileLevel, kMaxTileLevel)
         .flag("one-level-stencil",
               "umbra pixel by pixel, as the papers' passes (otherwise tiles an umbra polygon "
               "covers and passes whole take one coarse write)",
@@ -471,7 +456,9 @@ TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm) {
           "culling tile size of the umbra pass, a power of two in 2..256; 0: --tile-size",
           0, 1 << kMaxTileLevel,
           [](WedgeOptions& o, int64_t size) {
-            o.umbra_tile_level = size == 0 ? 0 : tileLevelOfSize(size, "--umbra-tile-size");
+            o.umbra_tile_level = size == 0 ? 0
+                                           : tileLevelOfSize(size, kMinTileLevel, kMaxTileLevel,
+                                                             "--umbra-tile-size");
           },
           [](const WedgeOptions& o) {
             return o.umbra_tile_level == 0 ? int64_t(0) : int64_t(1) << o.umbra_tile_level;

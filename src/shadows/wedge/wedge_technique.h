@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "shadows/caster_volume.h"
+#include "shadows/stages/caster_volumes/caster_volume.h"
 #include "shadows/technique.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge_culling.h"

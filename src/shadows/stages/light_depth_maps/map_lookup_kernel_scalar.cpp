@@ -1,0 +1,18 @@
+#include "shadows/stages/light_depth_maps/map_lookup_kernel.h"
+
+namespace penumbra {
+
+void pcfVisibilityScalar(const FaceTexels& face, const double* sx, const double* sy,
+                         const double* receiver, int kernel, float* visibility, size_t n) {
+  const double half = 0.5 * (kernel - 1);
+  for (size_t p = 0; p < n; ++p) {
+    const int x0 = int(std::floor(sx[p] - half));
+    const int y0 = int(std::floor(sy[p] - half));
+    int lit = 0;
+    for (int j = 0; j < kernel; ++j)
+      for (int i = 0; i < kernel; ++i) lit += occluderAt(face, x0 + i, y0 + j) >= receiver[p];
+    visibility[p] = float(lit) / float(kernel * kernel);
+  }
+}
+
+}  // namespace penumbra
