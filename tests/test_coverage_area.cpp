@@ -1,6 +1,6 @@
 // Per-edge coverage of the `coverage` technique against dense sampling of the light: the exact
 // area (shape_coverage.h), the float kernel and its SIMD twin (disk_coverage_kernel.h), the
-// per-point frame that projects 3D edges onto each light shape (coverage_frame.h), and the
+// per-point frame that projects 3D edges onto each light shape (coverage_basis.h), and the
 // 2003 paper's coverage table (coverage_table.h). Release run time about 0.6 s.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "scene/light.h"
-#include "shadows/coverage/coverage_frame.h"
+#include "shadows/coverage/coverage_basis.h"
 #include "shadows/coverage/coverage_table.h"
 #include "shadows/coverage/disk_coverage_kernel.h"
 #include "shadows/coverage/shape_coverage.h"
@@ -184,8 +184,8 @@ TEST(CoverageArea, FrameProjectsEdgesOntoEveryLightShape) {
       const dvec3 mid = p + (dvec3(c) - p) * (0.4 + 0.2 * u(rng)) + dvec3(u(rng), 0, u(rng)) * 0.3;
       const dvec3 dir = glm::normalize(dvec3(u(rng), 0.2 * u(rng), u(rng)));
       const dvec3 a = mid - dir * 0.6, b = mid + dir * 0.5;
-      CoverageFrame f;
-      ASSERT_TRUE(coverageFrame(light, p, f));
+      CoverageBasis f;
+      ASSERT_TRUE(coverageBasis(light, p, f));
       const double analytic = beyondFractionHomogeneous(f.outline, f.homogeneous(a), f.homogeneous(b));
       // Sample points of the light's outline in the frame's own plane (the sphere's tangent
       // disk), mapped back to world.

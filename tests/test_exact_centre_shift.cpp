@@ -25,8 +25,8 @@ struct HalfPlane {
   std::vector<EdgeTriangle> triangles{
       EdgeTriangle{7, true, false, 1, dvec3(-1.0, 2.0, 0.0), dvec3(0.0, 1.0, 0.0), -2.0}};
 
-  PixelFrame frame(const dvec3& depth_point, const dvec3& shaded, uint32_t visible) const {
-    PixelFrame f;
+  PixelBasis frame(const dvec3& depth_point, const dvec3& shaded, uint32_t visible) const {
+    PixelBasis f;
     f.start.depth_point = depth_point;
     f.p = shaded;
     f.primitive = visible;
@@ -74,7 +74,7 @@ const EdgeTriangle kFloor{7, true, false, 1, dvec3(-1, 0, 0), dvec3(0, 1, 0), 0.
 // just past the edge and the origin `origin` on the floor.
 int32_t floorEdgeShift(const EdgeTriangle& neighbour, const dvec3& origin, const dvec3& centre) {
   const std::vector<EdgeTriangle> triangles{kFloor, neighbour};
-  PixelFrame f;
+  PixelBasis f;
   f.primitive = kFloor.id;
   f.start.depth_point = dvec3(1e-4, 0, 0);
   f.p = origin;
@@ -134,7 +134,7 @@ TEST(ExactCentreShift, OriginBehindANeighbourCrossesItsCap) {
   rings.neighbours(1, neighbours);
   EXPECT_EQ(neighbours, (std::vector<uint32_t>{0, 2}));  // sharing a vertex with triangle 1
   const dvec3 centre(5, 3, 0), eye(-4, 0.5, 0.2);
-  PixelFrame f;
+  PixelBasis f;
   f.primitive = 1;
   f.p = dvec3(-1e-4, 1e-6, 0.1);  // in front of the wall
   EXPECT_EQ(capCrossings(scene, neighbours, f, centre, eye), 0);

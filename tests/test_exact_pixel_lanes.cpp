@@ -22,8 +22,8 @@ struct Case {
 };
 
 // A pixel's frame as setupPixel makes it, for a shaded point p and the light (c, r).
-PixelFrame frameAt(const dvec3& p, const dvec3& c, double r, uint32_t primitive) {
-  PixelFrame f;
+PixelBasis frameAt(const dvec3& p, const dvec3& c, double r, uint32_t primitive) {
+  PixelBasis f;
   f.ready = true;
   f.primitive = primitive;
   f.p = p;
@@ -68,7 +68,7 @@ TEST(ExactPixelLanes, BatchedTwinsGiveWhatThePerPixelTestGives) {
   int accepted = 0, deferred = 0, rejected = 0, clipped = 0, own = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     // The points: a patch of a floor, or scattered.
-    PixelFrame frames[kEdgeLanes];
+    PixelBasis frames[kEdgeLanes];
     const int count = 1 + int(random() % kEdgeLanes);
     const dvec3 centre(uniform(-2, 2), uniform(-0.5, 0.5), uniform(-2, 2));
     const double spread = random() % 2 ? 1e-3 : 1.0;
@@ -118,7 +118,7 @@ TEST(ExactPixelLanes, BatchedTwinsGiveWhatThePerPixelTestGives) {
     ASSERT_EQ(simd.deferred, scalar.deferred) << "trial " << trial;
     ASSERT_EQ(simd_passed & simd.deferred, 0u);
     for (int k = 0; k < count; ++k) {
-      const PixelFrame& f = frames[k];
+      const PixelBasis& f = frames[k];
       own += f.primitive == s.triangles[0].id;
       clipped += (glm::dot(s.edge.a - f.p, f.axis) < f.z_min) !=
                  (glm::dot(s.edge.b - f.p, f.axis) < f.z_min);

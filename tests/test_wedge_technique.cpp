@@ -19,7 +19,7 @@
 #include "shadows/technique.h"
 #include "shadows/volume/volume_technique.h"
 #include "shadows/wedge/li_buffer.h"
-#include "shadows/wedge/wedge_frame.h"
+#include "shadows/wedge/light_wedges.h"
 #include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
@@ -275,7 +275,7 @@ TEST(WedgeTechnique, RasterizedWedgesCoverExactlyThePointsInsideThem) {
     const Light& light = f.scene.lights[0];
     for (VolumeMode mode : {VolumeMode::ZPass, VolumeMode::ZFail}) {
       const WedgeLi rasterized = li(f, WedgeAlgorithm::ThreePass, options(mode));
-      const WedgeFrame frame = buildWedgeFrame(WedgeFrameOptions{mode, false}, f.scene, light,
+      const LightWedges frame = buildLightWedges(LightWedgesOptions{mode, false}, f.scene, light,
                                                f.view, f.eye);
       ASSERT_FALSE(frame.screen.empty());
       ClipTriangles umbra = frame.triangles;

@@ -23,7 +23,7 @@
 #include "shadows/technique.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge.h"
-#include "shadows/wedge/wedge_frame.h"
+#include "shadows/wedge/light_wedges.h"
 #include "shadows/wedge/wedge_technique.h"
 
 namespace penumbra {
@@ -200,11 +200,11 @@ TEST(WedgeOracle, EyeInsideShadowOrWedgeUsesZFail) {
       {"eye in wedge", vec3(2.24f, 0.8f, 0.0f), vec3(-1.0f, 0.0f, 4.0f), true, true}};
   for (const Case& c : cases) {
     const Frame f = makeFrame(tableScene(c.eye, c.target), 240, 160, 256);
-    const WedgeFrame wedges =
-        buildWedgeFrame(WedgeFrameOptions{}, f.scene, f.scene.lights[0], f.view, f.eye);
+    const LightWedges wedges =
+        buildLightWedges(LightWedgesOptions{}, f.scene, f.scene.lights[0], f.view, f.eye);
     bool eye_in_wedge = false;
     for (const Wedge& w : wedges.wedges) {
-      const dvec3 e(c.eye);  // the wedge is the region inside its four planes (wedge_frame.cpp)
+      const dvec3 e(c.eye);  // the wedge is the region inside its four planes (light_wedges.cpp)
       eye_in_wedge = eye_in_wedge || (w.front.eval(e) >= 0.0 && w.back.eval(e) >= 0.0 &&
                                       w.left.eval(e) >= 0.0 && w.right.eval(e) >= 0.0);
     }

@@ -33,7 +33,7 @@
 #include "core/parallel.h"
 #include "core/pixel_unprojector.h"
 #include "core/timer.h"
-#include "shadows/coverage/coverage_frame.h"
+#include "shadows/coverage/coverage_basis.h"
 #include "shadows/coverage/coverage_table.h"
 #include "shadows/coverage/disk_coverage_kernel.h"
 #include "shadows/coverage/shape_coverage.h"
@@ -122,7 +122,7 @@ struct PairBatch {
 
 struct CoverageScratch {
   PixelBlock block;
-  CoverageFrame frames[kBlockPixels];
+  CoverageBasis bases[kBlockPixels];
   bool framed[kBlockPixels];
   int px[kBlockPixels], py[kBlockPixels];
   float sum[kBlockPixels];
@@ -132,7 +132,7 @@ struct CoverageScratch {
   double plane_offset[kBlockPixels];
   float hard[kBlockPixels];  // 1 - the stencil's count of volumes holding the point
   // A textured light (textured_coverage.h): per channel, the edges' sum and the own plane's
-  // fraction, and whether the frame reads the texture mirrored.
+  // fraction, and whether the basis reads the texture mirrored.
   dvec3 sum_rgb[kBlockPixels];
   dvec3 own_rgb[kBlockPixels];
   bool flip[kBlockPixels];
@@ -286,13 +286,13 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             }
             // The visible triangle's plane cuts the light: the part behind it is blocked by the
             // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is),
-            // so the point needs its frame whether an edge reaches it or not.
+            // so the point needs its basis whether an edge reaches it or not.
             if (!away.clearOfLight(id)) cut |= uint64_t(1) << i;
           }
           for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
           if (block.active == 0) continue;
-          // The edges' candidate pixels first, then every frame the block needs in one loop
-          // (independent iterations: the square roots and divisions of one pixel's frame
+          // The edges' candidate pixels first, then every basis the block needs in one loop
+          // (independent iterations: the square roots and divisions of one pixel's basis
           // overlap the next one's), then the pairs.
           s.candidates.clear();
           uint64_t reached = 0;
@@ -308,20 +308,20 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             s.framed[i] = true;
             ++work.reads;
             const dvec3 p = unproject(s.px[i], s.py[i], block.z[i]);
-            if (!coverageFrame(light, p, s.frames[i])) {
+            if (!coverageBasis(light, p, s.bases[i])) {
               framed_ok &= ~(uint64_t(1) << i);
               continue;
             }
-            s.flip[i] = glm::dot(s.frames[i].b, edge_v) < 0.0;
+            s.flip[i] = glm::dot(s.bases[i].b, edge_v) < 0.0;
           }
           for (uint64_t todo = framed_ok & cut; todo != 0; todo &= todo - 1) {
             const int i = __builtin_ctzll(todo);
             const uint32_t id = eye.primitive.at(s.px[i], s.py[i]);
             const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
             if (normal == dvec3(0.0)) continue;
-            frontHalfPlane(s.frames[i], normal, s.plane_slope[i], s.plane_offset[i]);
+            frontHalfPlane(s.bases[i], normal, s.plane_slope[i], s.plane_offset[i]);
             s.own_plane[i] =
-                float(halfPlaneFraction(s.frames[i].outline, s.plane_slope[i], s.plane_offset[i]));
+                float(halfPlaneFraction(s.bases[i].outline, s.plane_slope[i], s.plane_offset[i]));
             if (textured && s.own_plane[i] < 1.0f) {
               s.own_rgb[i] =
                   texture->halfPlaneFraction(s.plane_slope[i], s.plane_offset[i], s.flip[i]);
@@ -338,7 +338,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             const PotentialEdge& e = edges.regions.edges[edge];
             for (uint64_t todo = s.candidates[j] & framed_ok; todo != 0; todo &= todo - 1) {
               const int i = __builtin_ctzll(todo);
-              s.batch.set(next++, s.frames[i].homogeneous(e.a), s.frames[i].homogeneous(e.b),
+              s.batch.set(next++, s.bases[i].homogeneous(e.a), s.bases[i].homogeneous(e.b),
                           edges.weight[edge], i);
             }
           }
@@ -387,9 +387,9 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
             float fraction = b.fraction[k];
             if (cut_terms && s.own_plane[i] < 1.0f) {
               dvec2 lo, hi;
-              fraction = clipToOutline(s.frames[i].outline, dvec3(b.x0[k], b.y0[k], b.w0[k]),
+              fraction = clipToOutline(s.bases[i].outline, dvec3(b.x0[k], b.y0[k], b.w0[k]),
                                        dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)
-                             ? float(insideFractionInHalfPlane(s.frames[i].outline, lo, hi,
+                             ? float(insideFractionInHalfPlane(s.bases[i].outline, lo, hi,
                                                                s.plane_slope[i],
                                                                s.plane_offset[i]))
                              : 0.0f;

@@ -6,7 +6,7 @@
 // triangle they make with the centre").
 //
 // Input per pair: the edge's end points a, b projected from the point onto the light's plane,
-// in homogeneous 2D coordinates (X, Y, W) of the plane's frame scaled so that the light is the
+// in homogeneous 2D coordinates (X, Y, W) of the plane's basis scaled so that the light is the
 // unit disk around the origin: W = 1 on the light's plane, 0 at the point, negative behind it
 // (coverage_technique.cpp sets them up in double). The segment is first cut to W >= kMinDepth
 // (the part in front of the point), then

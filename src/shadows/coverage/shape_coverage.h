@@ -35,7 +35,7 @@ double halfPlaneFraction(LightOutline outline, const dvec2& n, double offset);
 
 // insideFraction restricted to that half-plane: the signed area of the part of the light beyond
 // the segment (both ends in the light) and on the kept side, over the whole light's area. With
-// the visible surface's own plane as the half-plane (frontOfPlane in coverage_frame.h) the edge
+// the visible surface's own plane as the half-plane (frontOfPlane in coverage_basis.h) the edge
 // terms count only the light the surface does not already hide.
 double insideFractionInHalfPlane(LightOutline outline, const dvec2& lo, const dvec2& hi,
                                  const dvec2& n, double offset);

@@ -3,7 +3,7 @@
 // 2003 algorithm's textured lights), exact and per colour channel: the texture-weighted share
 // of the light in the region an edge covers, where shape_coverage.h has the area share.
 //
-// In the coverage frame's square [-1, 1]^2 (shape_coverage.h) the region beyond a segment a-b
+// In the coverage basis's square [-1, 1]^2 (shape_coverage.h) the region beyond a segment a-b
 // (ordered counter-clockwise around the centre) is the square cut by three half-planes: the
 // cone's two sides through a and b and the chord's far side; the visible surface's plane
 // (frontHalfPlane) cuts it once more at the terminator. Each cut keeps a convex polygon, whose
@@ -25,8 +25,8 @@ class TexturedSquare {
 
   // Signed texture-weighted fraction, per channel, of the light beyond the segment lo-hi (both
   // inside the square), signed as insideFraction (counter-clockwise turn positive); with
-  // `half_plane`, only the part where slope . (X, Y) + offset > 0. `flip_y`: the frame's second
-  // axis runs against the light's edge v (coverage_frame.h may flip it), so the texture is read
+  // `half_plane`, only the part where slope . (X, Y) + offset > 0. `flip_y`: the basis's second
+  // axis runs against the light's edge v (coverage_basis.h may flip it), so the texture is read
   // mirrored.
   dvec3 beyondFraction(dvec2 lo, dvec2 hi, bool flip_y, bool half_plane, dvec2 slope,
                        double offset) const;

@@ -62,7 +62,7 @@ struct ExactScratch {
   std::vector<uint8_t> into;
   std::vector<ConeSample> cone_samples;  // a pixel's samples, for the triangles cutting the light
   PixelBlock block;
-  PixelFrame frames[kBlockPixels];
+  PixelBasis frames[kBlockPixels];
   int px[kBlockPixels], py[kBlockPixels];
   std::vector<PixelEdge> edges[kBlockPixels];
   std::vector<const CuttingTriangle*> cutting[kBlockPixels];
@@ -93,7 +93,7 @@ class ExactSoftShadows final : public PreparedTechnique {
                          const RenderContext& context) const override;
 
  private:
-  float finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
+  float finishPixel(const PixelBasis& f, const std::vector<PixelEdge>& edges,
                     const std::vector<const CuttingTriangle*>& cutting, const Light& light,
                     bool simd, ExactScratch& scratch) const;
 
@@ -105,7 +105,7 @@ class ExactSoftShadows final : public PreparedTechnique {
   EdgeGeometry geometry_;  // the potential edges' light-independent half
 };
 
-float ExactSoftShadows::finishPixel(const PixelFrame& f, const std::vector<PixelEdge>& edges,
+float ExactSoftShadows::finishPixel(const PixelBasis& f, const std::vector<PixelEdge>& edges,
                                     const std::vector<const CuttingTriangle*>& cutting,
                                     const Light& light, bool simd, ExactScratch& scratch) const {
   // The count at the centre is a number of triangles crossed, never below 0: a negative
@@ -271,14 +271,14 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
       for (const uint32_t* it = begin; it != end && !tile_cuts; ++it)
         tile_cuts = bins.tests[*it].any_cuts;
       PixelBlock& block = scratch.block;
-      // The frame of the block's pixel i (setupPixel); on a z-pass volume with the caps of the
+      // The basis of the block's pixel i (setupPixel); on a z-pass volume with the caps of the
       // visible triangle's neighbours its origin may lie behind (capCrossings). Its quick-reject
       // offset becomes how far its shaded point lies from its depth-buffer point, over the
       // point's w (PixelBlock::offset), rounded up: most points lie on the pixel's own ray, and
       // the reject then keeps only the edges that can reach the point itself. Never above the
       // offset the tiles were binned with.
       const auto setUp = [&](int i, float& known) {
-        PixelFrame& f = scratch.frames[i];
+        PixelBasis& f = scratch.frames[i];
         const uint32_t id = f.primitive;
         const bool z_pass = replayed(id);
         if (!setupPixel(scratch.px[i], scratch.py[i], block.z[i], id, f.stencil, origins, light,
@@ -330,7 +330,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           const uint32_t id = eye.primitive.at(x, y);
           if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
           ++work.reads;
-          PixelFrame& f = scratch.frames[i];
+          PixelBasis& f = scratch.frames[i];
           f.ready = false;
           f.stencil = stencil.at(x, y);
           f.primitive = id;
@@ -391,7 +391,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             candidates &= candidates - 1;
             ++work.exact;
             setUpIfClear(i);
-            PixelFrame& f = scratch.frames[i];
+            PixelBasis& f = scratch.frames[i];
             bool zfail = false;
             f.centre_count += quadCountShift(edge, replay, scratch.px[i], scratch.py[i], f, zfail);
             if (zfail) {
@@ -411,7 +411,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
             for (uint32_t lanes = passed | sectors.deferred; lanes != 0; lanes &= lanes - 1) {
               const int k = __builtin_ctz(lanes);
               const int i = pending[first + k];
-              PixelFrame& f = scratch.frames[i];
+              PixelBasis& f = scratch.frames[i];
               std::vector<PixelEdge>& pixel_edges = scratch.edges[i];
               // Written in place: a PixelEdge built on the stack from the lanes' fields and
               // copied in was read back, in 16-byte pieces, before its narrower stores had
@@ -444,7 +444,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           while (candidates != 0) {
             const int i = __builtin_ctzll(candidates);
             candidates &= candidates - 1;
-            PixelFrame& f = scratch.frames[i];
+            PixelBasis& f = scratch.frames[i];
             if (t.id == f.primitive) continue;
             setUpIfClear(i);
             // Outside the cone, or in front of the light, where the edge sums count it.

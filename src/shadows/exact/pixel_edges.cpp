@@ -8,7 +8,7 @@
 
 namespace penumbra {
 
-CuttingPlace classifyCutting(const dvec3& a, const dvec3& b, const dvec3& c, const PixelFrame& f) {
+CuttingPlace classifyCutting(const dvec3& a, const dvec3& b, const dvec3& c, const PixelBasis& f) {
   // The whole triangle in front (the clipped part then is too): the common case, no clipping.
   const double limit = f.light_near * (1.0 - 1e-9);
   if (std::max({glm::dot(a - f.p, f.axis), glm::dot(b - f.p, f.axis),
@@ -40,7 +40,7 @@ CuttingPlace classifyCutting(const dvec3& a, const dvec3& b, const dvec3& c, con
   return deepest < limit ? CuttingPlace::InFront : CuttingPlace::Across;
 }
 
-bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light& light) {
+bool mayBlockSamples(const CuttingTriangle& t, const PixelBasis& f, const Light& light) {
   // A relative margin far wider than the rounding of these double evaluations.
   const double scale = glm::length(f.p - dvec3(light.center)) + light.radius;
   const double margin = 1e-9 * scale;
@@ -66,7 +66,7 @@ bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light&
   return !same_side;
 }
 
-SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f,
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelBasis& f,
                         const SortedSamples& samples) {
   SampleRuns all;
   all.end[0] = uint32_t(samples.padded);
@@ -117,10 +117,10 @@ bool pointOnTriangle(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3
 
 }  // namespace
 
-// Sets up the frame of a pixel; false when its visibility is already known (`known`).
+// Sets up the basis of a pixel; false when its visibility is already known (`known`).
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
                 const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
-                bool replayed, PixelFrame& f, float& known) {
+                bool replayed, PixelBasis& f, float& known) {
   const dvec3 c(light.center);
   const double r = light.radius;
   f.ready = true;
@@ -163,14 +163,14 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   return true;
 }
 int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, int y,
-                       const PixelFrame& f, bool& zfail) {
+                       const PixelBasis& f, bool& zfail) {
   zfail = false;
   const StencilQuads& quads = replay.quads;
   // Only a quad whose plane passes by the two points can count differently at them; elsewhere
   // along the eye's ray the stencil's decision stands (its quads' borders are snapped, and a
   // border near the pixel is shared with a neighbouring quad whose decision pairs with it).
   // Tested first, from the edge alone: most candidate edges stop here. (With a z-fail volume in
-  // the frame, its edges must reach centreCountShift whatever their plane: looked up first.)
+  // the basis, its edges must reach centreCountShift whatever their plane: looked up first.)
   const dvec3& m = e.centre_normal;
   const double mm = glm::dot(m, m);
   const double at_point = glm::dot(m, f.p - replay.centre);
@@ -215,7 +215,7 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
 }
 
 int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours,
-                     const PixelFrame& f, const dvec3& centre, const dvec3& eye_position) {
+                     const PixelBasis& f, const dvec3& centre, const dvec3& eye_position) {
   int32_t shift = 0;
   for (const uint32_t id : neighbours) {
     const auto [m, t] = scene.locateTriangle(id);
@@ -232,7 +232,7 @@ int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours
 }
 
 int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
-                         const PixelFrame& f, const dvec3& centre, const dvec3& eye) {
+                         const PixelBasis& f, const dvec3& centre, const dvec3& eye) {
   // The quad is the part of the plane through the centre and the edge beyond the edge: the
   // points x = centre + alpha (a - centre) + beta (b - centre), alpha, beta >= 0,
   // alpha + beta >= 1. From such a point the segment toward the centre passes through the edge.
@@ -302,8 +302,8 @@ int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
 
 namespace {
 
-// The fields of a pixel's frame the exact test reads, as PixelLanes holds them.
-struct PointFrame {
+// The fields of a pixel's basis the exact test reads, as PixelLanes holds them.
+struct PointBasis {
   dvec3 p, axis, tangent, bitangent;
   double z_min, light_radius, light_near;
   uint32_t primitive;
@@ -313,7 +313,7 @@ struct PointFrame {
 // to p, their depths along the axis; false when it changes no sample, else `out` and the
 // pseudo-angle range [from, to] of its sector (sampleRuns' arguments). The SIMD twin
 // (pixel_edges_simd.cpp) repeats these operations in this order.
-bool edgeSector(int32_t weight, dvec3 a, dvec3 b, double za, double zb, const PointFrame& f,
+bool edgeSector(int32_t weight, dvec3 a, dvec3 b, double za, double zb, const PointBasis& f,
                 SampleEdge& out, double& from, double& to) {
   // Clip to z >= z_min: the part behind projects outside the light.
   if (za < f.z_min) {
@@ -396,8 +396,8 @@ bool silhouetteWeight(const PotentialEdge& e, const EdgeTriangle* triangles, con
   return true;
 }
 
-PointFrame pointFrame(const PixelLanes& lanes, int k) {
-  return PointFrame{dvec3(lanes.px[k], lanes.py[k], lanes.pz[k]),
+PointBasis pointBasis(const PixelLanes& lanes, int k) {
+  return PointBasis{dvec3(lanes.px[k], lanes.py[k], lanes.pz[k]),
                     dvec3(lanes.ax[k], lanes.ay[k], lanes.az[k]),
                     dvec3(lanes.tx[k], lanes.ty[k], lanes.tz[k]),
                     dvec3(lanes.bx[k], lanes.by[k], lanes.bz[k]),
@@ -409,7 +409,7 @@ PointFrame pointFrame(const PixelLanes& lanes, int k) {
 
 }  // namespace
 
-void PixelLanes::setLane(int k, const PixelFrame& f) {
+void PixelLanes::setLane(int k, const PixelBasis& f) {
   px[k] = f.p.x, py[k] = f.p.y, pz[k] = f.p.z;
   ax[k] = f.axis.x, ay[k] = f.axis.y, az[k] = f.axis.z;
   tx[k] = f.tangent.x, ty[k] = f.tangent.y, tz[k] = f.tangent.z;
@@ -426,7 +426,7 @@ uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangle
   uint32_t accepted = 0;
   out.deferred = 0;
   for (int k = 0; k < pixels.count; ++k) {
-    const PointFrame f = pointFrame(pixels, k);
+    const PointBasis f = pointBasis(pixels, k);
     const dvec3 a = e.a - f.p, b = e.b - f.p;
     const double za = glm::dot(a, f.axis), zb = glm::dot(b, f.axis);
     if (za <= f.z_min && zb <= f.z_min) continue;
@@ -454,7 +454,7 @@ uint32_t edgeAtPixelsScalar(const PotentialEdge& e, const EdgeTriangle* triangle
 
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.
-bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
+bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelBasis& f,
                  const SortedSamples& samples, PixelEdge& pixel_edge, int32_t& weight_out) {
   const dvec3& p = f.p;
   const dvec3 a = e.a - p, b = e.b - p;
@@ -469,10 +469,10 @@ bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const Pi
                    },
                    weight);
   if (weight == 0) return false;
-  const PointFrame frame{p,      f.axis,         f.tangent,     f.bitangent,
+  const PointBasis basis{p,      f.axis,         f.tangent,     f.bitangent,
                          f.z_min, f.light_radius, f.light_near, f.primitive};
   double from = 0.0, to = 0.0;
-  if (!edgeSector(weight, a, b, za, zb, frame, pixel_edge.edge, from, to)) return false;
+  if (!edgeSector(weight, a, b, za, zb, basis, pixel_edge.edge, from, to)) return false;
   weight_out = weight;
   pixel_edge.runs = sampleRuns(samples, from, to);
   return true;

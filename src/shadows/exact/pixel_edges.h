@@ -1,5 +1,5 @@
 #pragma once
-// One pixel of the exact soft shadow volumes: its shaded point and light frame, and the exact
+// One pixel of the exact soft shadow volumes: its shaded point and light basis, and the exact
 // test of one potential silhouette edge there (exact_technique.cpp says how they add up).
 #include <cstdint>
 #include <vector>
@@ -19,7 +19,7 @@
 namespace penumbra {
 
 // A visible point and the light as it sees it: the oracle's ray origin and sample cone.
-struct PixelFrame {
+struct PixelBasis {
   // Set up only once an edge may matter (setupPixel); until then all that is known is the
   // stencil, and the pixel's triangle has the whole light in front of it
   // (FacingAway::clearOfLight).
@@ -59,17 +59,17 @@ inline constexpr double kTfarShrink = 1e-6;
 // it beyond the light). The edge sums take InFront triangles as any other and leave the rest;
 // Across ones are counted sample by sample. Both use this one test.
 enum class CuttingPlace { Outside, InFront, Across };
-CuttingPlace classifyCutting(const dvec3& a, const dvec3& b, const dvec3& c, const PixelFrame& f);
+CuttingPlace classifyCutting(const dvec3& a, const dvec3& b, const dvec3& c, const PixelBasis& f);
 
 // False when the triangle cannot block any sample of the point: the point lies outside the
 // triangle's region, the triangle lies wholly behind the light centre, or the whole cap of the
 // light the point sees lies on the point's side of the triangle's plane (a segment from the
 // point to the cap then never crosses the plane).
-bool mayBlockSamples(const CuttingTriangle& t, const PixelFrame& f, const Light& light);
+bool mayBlockSamples(const CuttingTriangle& t, const PixelBasis& f, const Light& light);
 
 // The blocks of samples whose angle around the light centre the triangle's projection from the
 // point can reach (all of them when it surrounds the centre or reaches behind the point).
-SampleRuns triangleRuns(const CuttingTriangle& t, const PixelFrame& f,
+SampleRuns triangleRuns(const CuttingTriangle& t, const PixelBasis& f,
                         const SortedSamples& samples);
 
 // Does o + t d, 0 < t < t_max, cross the triangle abc (Moller and Trumbore 1997, in double)?
@@ -80,14 +80,14 @@ inline bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max,
   return segmentHitsTriangle(o, d, t_max, t.v[0], t.v[1], t.v[2]);
 }
 
-// Sets up the frame of a pixel; false when its visibility is already known (`known`).
+// Sets up the basis of a pixel; false when its visibility is already known (`known`).
 // `triangle`: the work item's last visible triangle, for RayOrigins::start.
 // `replayed`: the visible triangle's mesh is a z-pass volume whose quads quadCountShift moves to
 // the shaded point, and the visible triangle is taken out as the segment from there to the
 // light centre crosses it; else as the stencil counted it at the depth-buffer point.
 bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
                 const RayOrigins& origins, const Light& light, OriginTriangle& triangle,
-                bool replayed, PixelFrame& f, float& known);
+                bool replayed, PixelBasis& f, float& known);
 
 // For a z-fail volume's edge (quadCountShift replays z-pass quads only): how the count at the
 // light centre changes from the pixel's depth-buffer point, where the stencil counted it, to
@@ -98,7 +98,7 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
 // triangle's pixels, ShadowStencilOptions::skip_own_quads, and the origin was snapped onto the
 // triangle, often right at that edge) the neighbours are tested directly from both points.
 int32_t centreCountShift(const PotentialEdge& e, const EdgeTriangle* triangles,
-                         const PixelFrame& f, const dvec3& centre, const dvec3& eye);
+                         const PixelBasis& f, const dvec3& centre, const dvec3& eye);
 
 // The stencil's count moved from pixel (x, y)'s depth-buffer point to the shaded point f.p over
 // the quad of edge e, for a z-pass volume: the stencil's own decision for each piece of the quad
@@ -117,7 +117,7 @@ struct QuadReplay {
   bool any_zfail;     // some mesh's volume was drawn z-fail
 };
 int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, int y,
-                       const PixelFrame& f, bool& zfail);
+                       const PixelBasis& f, bool& zfail);
 
 // The rest of what separates the stencil from the count at f.p on a z-pass volume: the caps.
 // The depth-buffer point is seen from the eye, but the origin, snapped onto the visible
@@ -126,16 +126,16 @@ int32_t quadCountShift(const PotentialEdge& e, const QuadReplay& replay, int x, 
 // side, +1) or leaves (-1) its volume: the count a z-pass stencil would have there.
 // `neighbours`: the triangles sharing a vertex with the visible one (VertexRings).
 int32_t capCrossings(const Scene& scene, const std::vector<uint32_t>& neighbours,
-                     const PixelFrame& f, const dvec3& centre, const dvec3& eye_position);
+                     const PixelBasis& f, const dvec3& centre, const dvec3& eye_position);
 
 // The exact test of one edge at one point: false when the edge changes none of its samples,
 // else `out` says which samples it changes and by how much.
-bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelFrame& f,
+bool edgeAtPixel(const PotentialEdge& e, const EdgeTriangle* triangles, const PixelBasis& f,
                  const SortedSamples& samples, PixelEdge& pixel_edge, int32_t& weight_out);
 
 // The same test of one edge at up to kEdgeLanes points at once (SIMD over the points in double,
 // the same operations in the same order; edgeAtPixelsScalar is its scalar twin). The points are
-// the frames' fields edgeAtPixel reads, one lane each (setLane). Returns bit k set for each
+// the bases' fields edgeAtPixel reads, one lane each (setLane). Returns bit k set for each
 // lane k whose test passes, with its SampleEdge, weight, the pseudo-angle range [from, to] of
 // its sector and its sample runs (sampleRuns of that range) in `out`. A triangle of the edge
 // whose plane cuts the light counts where classifyCutting finds it in front of the light; its
@@ -150,7 +150,7 @@ struct PixelLanes {
   alignas(64) double z_min[kEdgeLanes], light_radius[kEdgeLanes], light_near[kEdgeLanes];
   alignas(64) double primitive[kEdgeLanes];  // the visible triangle's id (exact in double)
   int count = 0;
-  void setLane(int k, const PixelFrame& f);
+  void setLane(int k, const PixelBasis& f);
 };
 struct EdgeLanes {
   SampleEdge edge[kEdgeLanes];

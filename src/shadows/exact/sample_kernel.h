@@ -3,7 +3,7 @@
 // complexity of every light sample of one pixel (docs/exact-soft-shadows.md, "Per pixel").
 //
 // Samples are points (x, y) of the plane tangent to the light's direction cone at unit distance
-// from the pixel's point, in the cone's frame (light_sampling.h): the light centre is (0, 0).
+// from the pixel's point, in the cone's basis (light_sampling.h): the light centre is (0, 0).
 // The edge, projected from the point, is a segment a'b' on that plane. A sample s changes by
 // `delta` exactly when the segment from the centre to s crosses a'b', that is when s lies
 //   - inside the sector from the centre spanned by a' and b': on the `a_side` of the line

@@ -369,7 +369,7 @@ double wedgeIntensity(const Wedge& wedge, const dvec3& p, Falloff falloff) {
 
 bool insideWedge(const Wedge& wedge, const dvec3& p) {
   if (wedge.flat) return false;
-  // The four planes only, as the penumbra passes rasterize the wedge (wedge_frame.cpp): no
+  // The four planes only, as the penumbra passes rasterize the wedge (light_wedges.cpp): no
   // Figure 6 bottom cut, whose far side no wedge would cover.
   return wedge.front.eval(p) >= 0.0 && wedge.back.eval(p) >= 0.0 && wedge.left.eval(p) >= 0.0 &&
          wedge.right.eval(p) >= 0.0;

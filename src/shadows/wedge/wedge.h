@@ -72,7 +72,7 @@ struct Wedge {
   // far_front_left), back (a, b, far_back_right, far_back_left), left (a, far_front_left,
   // far_back_left), right (b, far_front_right, far_back_right) and bottom (the four far_*).
   // Diagnostic only: rendering and insideWedge use the four planes, which close the wedge
-  // where the side planes meet (wedge_frame.cpp says why).
+  // where the side planes meet (light_wedges.cpp says why).
   bool finite = false;
   Plane bottom;
   dvec3 far_front_left{0.0}, far_front_right{0.0}, far_back_left{0.0}, far_back_right{0.0};
@@ -174,7 +174,7 @@ double applyFalloff(double s, Falloff falloff);
 // plane, 0 on the back plane, continuous across the shared side planes of adjacent wedges.
 double wedgeIntensity(const Wedge& wedge, const dvec3& p, Falloff falloff = Falloff::Linear);
 // Whether p is inside all four planes of a wedge that is not flat: the region the penumbra
-// passes rasterize (wedge_frame.cpp). The Figure 6 bottom cut (finite, bottom) is not applied.
+// passes rasterize (light_wedges.cpp). The Figure 6 bottom cut (finite, bottom) is not applied.
 bool insideWedge(const Wedge& wedge, const dvec3& p);
 
 }  // namespace penumbra

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "shadows/wedge/wedge_frame.h"
+#include "shadows/wedge/light_wedges.h"
 
 namespace penumbra {
 

@@ -38,7 +38,7 @@ struct ScreenIntensity {
   float front_left, back_left, front_right, back_right, left, right;
 };
 
-// The wedge is the region inside its four planes (wedge_frame.cpp); the Figure 6 bottom plane of
+// The wedge is the region inside its four planes (light_wedges.cpp); the Figure 6 bottom plane of
 // the wedge builder is not used.
 struct ScreenWedge {
   ScreenPlane front, back, left, right;

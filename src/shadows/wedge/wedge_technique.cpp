@@ -1,7 +1,7 @@
 // Penumbra wedge soft shadows: the 2002 algorithm and the 2004 restructured algorithm in its
 // three-pass and single-pass implementations (2004 paper, sections 3-6).
 //
-// The frame's triangles (wedge_frame.h) are set up once per light; every pass bins the ones it
+// The wedges' triangles (light_wedges.h) are set up once per light; every pass bins the ones it
 // draws from that one setup.
 //
 // Restructured (section 3): rasterizeUmbra(front planes, -255) with the depth test, then
@@ -37,7 +37,7 @@
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
 #include "shadows/wedge/wedge_culling.h"
-#include "shadows/wedge/wedge_frame.h"
+#include "shadows/wedge/light_wedges.h"
 #include "shadows/wedge/wedge_kernel.h"
 
 namespace penumbra {
@@ -49,10 +49,10 @@ struct WedgeTileWork {
   uint64_t accepted = 0;  // culling tiles whose umbra part went to the coarse level
 };
 
-std::vector<WedgeCullPlanes> cullPlanes(const WedgeFrame& frame, int width, int height) {
-  std::vector<WedgeCullPlanes> planes(frame.screen.size());
+std::vector<WedgeCullPlanes> cullPlanes(const LightWedges& light_wedges, int width, int height) {
+  std::vector<WedgeCullPlanes> planes(light_wedges.screen.size());
   for (size_t i = 0; i < planes.size(); ++i)
-    planes[i] = wedgeCullPlanes(frame.screen[i], width, height);
+    planes[i] = wedgeCullPlanes(light_wedges.screen[i], width, height);
   return planes;
 }
 
@@ -92,14 +92,14 @@ int32_t umbraValue(const WedgeRole& role, const SetupTriangle& t, int full) {
 
 // Three-pass, pass 1 and 2: the umbra volume into a stencil buffer, then LI = full - full * s.
 // The stencil is read as 8 bits wrapping around, as the papers' hardware stencil.
-void umbraThroughStencil(const WedgeFrame& frame, const std::vector<SetupTriangle>& setup,
+void umbraThroughStencil(const LightWedges& light_wedges, const std::vector<SetupTriangle>& setup,
                          const WedgeOptions& options, const RenderContext& context,
                          const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   // The umbra volume's triangles with their stencil weights as payload (rasterizer.h); the
-  // frame's setup already carries the z-fail flag.
+  // light wedges' setup already carries the z-fail flag.
   std::vector<SetupTriangle> umbra;
   for (const SetupTriangle& t : setup) {
-    const int32_t weight = frame.roles[size_t(t.payload)].umbra_weight;
+    const int32_t weight = light_wedges.roles[size_t(t.payload)].umbra_weight;
     if (weight == 0) continue;
     umbra.push_back(t);
     umbra.back().payload = weight;
@@ -117,7 +117,7 @@ void umbraThroughStencil(const WedgeFrame& frame, const std::vector<SetupTriangl
   });
 }
 
-// The scaffolding of the wedge passes: `setup` is the frame's set-up triangles, taken by value
+// The scaffolding of the wedge passes: `setup` is the wedges' set-up triangles, taken by value
 // and filtered in place to those the pass draws (keep(role, triangle)); for every bin tile that
 // holds one of them, on the worker owning it, fn(triangle, rect, target, coarse,
 // tile_work) for those triangles in input order, where target() gives the tile's depth and LI
@@ -126,7 +126,7 @@ void umbraThroughStencil(const WedgeFrame& frame, const std::vector<SetupTriangl
 // the LI (wrapping) before it is stored (two-level stencil, raster/tile_offsets.h). Counters
 // are summed in tile order.
 template <class Keep, class Fn>
-void forEachWedgeTriangle(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
+void forEachWedgeTriangle(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                           const EyeBuffers& eye, LiBuffer& li, Stats& stats, int coarse_level,
                           Keep&& keep, Fn&& fn) {
   const int width = li.width(), height = li.height();
@@ -138,7 +138,7 @@ void forEachWedgeTriangle(const WedgeFrame& frame, std::vector<SetupTriangle> se
     TileCopy<int16_t> li;
   };
   std::erase_if(setup, [&](const SetupTriangle& t) {
-    return !keep(frame.roles[size_t(t.payload)], t);
+    return !keep(light_wedges.roles[size_t(t.payload)], t);
   });
   forEachBinTile(
       setup, width, height,
@@ -168,16 +168,16 @@ void forEachWedgeTriangle(const WedgeFrame& frame, std::vector<SetupTriangle> se
   addTileWork(work, stats);
 }
 
-void penumbraPass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
+void penumbraPass(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                   const WedgeOptions& options, const RenderContext& context,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
-  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
+  const std::vector<WedgeCullPlanes> planes = cullPlanes(light_wedges, li.width(), li.height());
   forEachWedgeTriangle(
-      frame, std::move(setup), eye, li, stats, options.tile_level, penumbraFace,
+      light_wedges, std::move(setup), eye, li, stats, options.tile_level, penumbraFace,
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, WedgeTileWork& tw) {
-        const WedgeRole& role = frame.roles[size_t(t.payload)];
+        const WedgeRole& role = light_wedges.roles[size_t(t.payload)];
         WedgeKernelWork k;
-        k.wedge = &frame.screen[size_t(role.wedge)];
+        k.wedge = &light_wedges.screen[size_t(role.wedge)];
         k.li_scale = float(full);
         forEachCullRect(
             t, e, eye.depth, options.tile_level,
@@ -192,21 +192,22 @@ void penumbraPass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
       });
 }
 
-void singlePass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
+void singlePass(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                 const WedgeOptions& options, const RenderContext& context, const EyeBuffers& eye,
                 int full, LiBuffer& li, Stats& stats) {
-  const std::vector<WedgeCullPlanes> planes = cullPlanes(frame, li.width(), li.height());
+  const std::vector<WedgeCullPlanes> planes = cullPlanes(light_wedges, li.width(), li.height());
   const bool two_level = options.two_level_stencil && options.cull == CullMode::Full;
   forEachWedgeTriangle(
-      frame, std::move(setup), eye, li, stats, options.tile_level,
+      light_wedges, std::move(setup), eye, li, stats, options.tile_level,
       [](const WedgeRole& role, const SetupTriangle& t) {
         return role.umbra_weight != 0 || penumbraFace(role, t);
       },
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets& coarse,
           WedgeTileWork& tw) {
-        const WedgeRole& role = frame.roles[size_t(t.payload)];
+        const WedgeRole& role = light_wedges.roles[size_t(t.payload)];
         const bool has_penumbra = penumbraFace(role, t);
-        const ScreenWedge* wedge = has_penumbra ? &frame.screen[size_t(role.wedge)] : nullptr;
+        const ScreenWedge* wedge =
+            has_penumbra ? &light_wedges.screen[size_t(role.wedge)] : nullptr;
         // Per culling tile, which parts run there: bit 0 the umbra, bit 1 the penumbra, bit 2
         // the umbra as one coarse value for the whole tile (two-level stencil).
         constexpr int kUmbra = 1, kPenumbra = 2, kUmbraWhole = 4;
@@ -247,7 +248,7 @@ void singlePass(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
       });
 }
 
-void original2002(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
+void original2002(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                   const WedgeOptions& options, const RenderContext& context,
                   const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
   // Entries (front-facing wedge faces) and umbra quads; back-facing wedge faces add nothing.
@@ -255,12 +256,12 @@ void original2002(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
     return role.wedge != kNoWedge && t.facing * role.face_sign > 0;
   };
   forEachWedgeTriangle(
-      frame, std::move(setup), eye, li, stats, options.tile_level,
+      light_wedges, std::move(setup), eye, li, stats, options.tile_level,
       [&](const WedgeRole& role, const SetupTriangle& t) {
         return entry(role, t) || role.umbra_weight != 0;
       },
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, WedgeTileWork& tw) {
-        const WedgeRole& role = frame.roles[size_t(t.payload)];
+        const WedgeRole& role = light_wedges.roles[size_t(t.payload)];
         if (!setupRectEdges(t, e)) return;
         ++tw.tally.tested;
         if (!entry(role, t)) {
@@ -276,8 +277,8 @@ void original2002(const WedgeFrame& frame, std::vector<SetupTriangle> setup,
           wedgeKernel(e, k, target(), tw.umbra, context.simd);
           return;
         }
-        wedge2002Kernel(e, frame.screen[size_t(role.wedge)], role.face, float(full), target(),
-                        tw.penumbra);
+        wedge2002Kernel(e, light_wedges.screen[size_t(role.wedge)], role.face, float(full),
+                        target(), tw.penumbra);
       });
 }
 
@@ -300,25 +301,25 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
   Stats& stats = result.stats;
   const int full = kLiFull;
   result.full = full;
-  WedgeFrame frame;
+  LightWedges light_wedges;
   std::vector<SetupTriangle> setup;
   {
     PassTimer timer(stats, "wedges");
-    WedgeFrameOptions frame_options;
+    LightWedgesOptions build_options;
     // The 2002 algorithm predates z-fail for wedges (its section 8): always from the eye.
-    frame_options.volume_mode =
+    build_options.volume_mode =
         algorithm == WedgeAlgorithm::Original2002 ? VolumeMode::ZPass : options.volume_mode;
-    frame_options.smooth_falloff = options.smooth_falloff;
-    frame_options.edge_on_facing = edge_on_facing;
-    frame_options.other_facing_meshes = other_facing_meshes;
-    frame = buildWedgeFrame(frame_options, scene, light, view, eye);
-    stats.silhouette_edges += frame.silhouette_edges;
-    stats.wedges += frame.wedges.size();
+    build_options.smooth_falloff = options.smooth_falloff;
+    build_options.edge_on_facing = edge_on_facing;
+    build_options.other_facing_meshes = other_facing_meshes;
+    light_wedges = buildLightWedges(build_options, scene, light, view, eye);
+    stats.silhouette_edges += light_wedges.silhouette_edges;
+    stats.wedges += light_wedges.wedges.size();
   }
-  if (edge_on_facing != 0 && frame.silhouette_edges == 0) return result;
+  if (edge_on_facing != 0 && light_wedges.silhouette_edges == 0) return result;
   {
     PassTimer timer(stats, "setup");
-    setup = setupTriangles(frame.triangles, view.width, view.height);
+    setup = setupTriangles(light_wedges.triangles, view.width, view.height);
     stats.triangles += setup.size();
   }
   LiBuffer& li = result.li;
@@ -327,20 +328,20 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
     case WedgeAlgorithm::ThreePass: {
       {
         PassTimer timer(stats, "umbra");
-        umbraThroughStencil(frame, setup, options, context, eye, full, li, stats);
+        umbraThroughStencil(light_wedges, setup, options, context, eye, full, li, stats);
       }
       PassTimer timer(stats, "penumbra");
-      penumbraPass(frame, std::move(setup), options, context, eye, full, li, stats);
+      penumbraPass(light_wedges, std::move(setup), options, context, eye, full, li, stats);
       break;
     }
     case WedgeAlgorithm::SinglePass: {
       PassTimer timer(stats, "single-pass");
-      singlePass(frame, std::move(setup), options, context, eye, full, li, stats);
+      singlePass(light_wedges, std::move(setup), options, context, eye, full, li, stats);
       break;
     }
     case WedgeAlgorithm::Original2002: {
       PassTimer timer(stats, "wedge-2002");
-      original2002(frame, std::move(setup), options, context, eye, full, li, stats);
+      original2002(light_wedges, std::move(setup), options, context, eye, full, li, stats);
       break;
     }
   }

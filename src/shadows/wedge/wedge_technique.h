@@ -17,9 +17,9 @@ TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm);
 
 // The wedge passes up to the LI buffer (li_buffer.h), for comparing implementations.
 // `edge_on_facing` +1 or -1 draws only the edge-on casters with that facing that the casters'
-// own silhouettes leave out (WedgeFrameOptions, edge_on_sheet.h); when there are none, the
+// own silhouettes leave out (LightWedgesOptions, edge_on_sheet.h); when there are none, the
 // returned buffer is empty (0 x 0) and no pass ran. `other_facing_meshes`: not null, only those
-// meshes cast, with the facing they otherwise leave out (WedgeFrameOptions).
+// meshes cast, with the facing they otherwise leave out (LightWedgesOptions).
 WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene,
                       const Light& light, const View& view, const EyeBuffers& eye,
                       const RenderContext& context = {}, int8_t edge_on_facing = 0,

@@ -1,4 +1,4 @@
-#include "shadows/wedge/wedge_frame.h"
+#include "shadows/wedge/light_wedges.h"
 
 #include <algorithm>
 #include <optional>
@@ -30,9 +30,9 @@ dvec3 newellNormal(const std::vector<Corner>& poly) {
   return n;
 }
 
-class FrameBuilder {
+class LightWedgesBuilder {
  public:
-  FrameBuilder(WedgeFrame& frame, const View& view) : f_(frame), view_(view) {}
+  LightWedgesBuilder(LightWedges& wedges, const View& view) : f_(wedges), view_(view) {}
 
   uint32_t vertex(const vec4& homogeneous_world) {
     return f_.triangles.addVertex(view_.toClip(homogeneous_world));
@@ -49,7 +49,7 @@ class FrameBuilder {
   }
 
  private:
-  WedgeFrame& f_;
+  LightWedges& f_;
   const View& view_;
 };
 
@@ -232,12 +232,12 @@ bool frontIsQuad(const WedgeHull& hull) {
   return points == 2 && directions == 2;
 }
 
-// A mesh's world-space wedges and their hulls and screen planes: everything of the frame that
+// A mesh's world-space wedges and their hulls and screen planes: everything of the wedges that
 // does not depend on the other meshes, so meshes are prepared in parallel (a scene of many small
 // casters, like columns, has too few wedges per mesh to split one mesh's work).
 struct MeshWedges {
   CasterVolume volume;
-  // A silhouette edge the light reaches: no wedges are built, the frame is refused.
+  // A silhouette edge the light reaches: no wedges are built, the light is refused.
   std::optional<EdgeInsideLight> inside_light;
   WedgeSet ws;
   std::vector<WedgeHull> hulls;      // per wedge of ws.wedges, then ws.gap_wedges
@@ -253,7 +253,7 @@ struct MeshWedges {
   }
 };
 
-MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, size_t m,
+MeshWedges prepareMesh(const LightWedgesOptions& options, const Scene& scene, size_t m,
                        const Light& light, const View& view, const EyeBuffers& eye,
                        const ScreenProjection& projection) {
   const Mesh& mesh = scene.meshes[m];
@@ -265,7 +265,7 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
   // and the inner half of the penumbra clamps to black (the overlap the 2002 paper names as a
   // limitation, section 8: README, "Known limitation: overlapping wedges"). With
   // a zero radius there is no penumbra, and the umbra must be the hard shadow volume bit for
-  // bit (wedge_frame.h), so the hard volume's casters are kept. The soft volume lies within
+  // bit (light_wedges.h), so the hard volume's casters are kept. The soft volume lies within
   // distance r of the hard volume from the centre, so growing the caster's box by r keeps the
   // near-plane test conservative (caster_volume.h).
   const CasterPolicy policy = !soft                 ? CasterPolicy::Auto
@@ -285,7 +285,7 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
   p.screens.resize(n_wedges);
   if (!soft) return p;
   // Hulls and screen-space planes are independent per wedge (most of the construction time:
-  // 19k wedges on fractal), so they are solved in parallel too; the frame numbers the wedges
+  // 19k wedges on fractal), so they are solved in parallel too; the wedges are numbered
   // in order, so it does not depend on the thread count.
   constexpr size_t kChunk = 64;
   parallelFor((n_wedges + kChunk - 1) / kChunk, [&](size_t c) {
@@ -305,11 +305,11 @@ MeshWedges prepareMesh(const WedgeFrameOptions& options, const Scene& scene, siz
 
 }  // namespace
 
-WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
+LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& scene,
                            const Light& light, const View& view, const EyeBuffers& eye) {
-  WedgeFrame f;
+  LightWedges f;
   f.triangles = ClipTriangles(eye.clip_vertices);
-  FrameBuilder out(f, view);
+  LightWedgesBuilder out(f, view);
   const bool soft = light.radius > 0.0f;
   const ScreenProjection projection = screenProjection(view);
   std::vector<MeshWedges> prepared(scene.meshes.size());
@@ -321,7 +321,7 @@ WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
     if (casts(m)) prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);
   });
   // The nearest edge the light reaches (the first mesh's on a tie, whatever the thread count):
-  // its distance is the largest radius the frame's wedges could take.
+  // its distance is the largest radius the light's wedges could take.
   size_t reached = scene.meshes.size();
   for (size_t m = 0; m < scene.meshes.size(); ++m)
     if (prepared[m].inside_light &&

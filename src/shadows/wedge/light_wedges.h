@@ -31,12 +31,12 @@ struct WedgeRole {
 };
 
 // Faces of a wedge polyhedron, the region inside its four planes; kFar is its face at infinity
-// when it is unbounded (wedge_frame.cpp).
+// when it is unbounded (light_wedges.cpp).
 enum WedgeFace : int8_t { kFront = 0, kBack = 1, kLeft = 2, kRight = 3, kFar = 4 };
 
-struct WedgeFrame {
+struct LightWedges {
   // Payload: index into roles. Finite caster vertices are the eye pass's (borrowed from the
-  // EyeBuffers the frame was built with, which must outlive it).
+  // EyeBuffers the wedges were built with, which must outlive it).
   ClipTriangles triangles;
   std::vector<WedgeRole> roles;
   std::vector<Wedge> wedges;       // all meshes' wedges; WedgeRole::wedge indexes these
@@ -48,10 +48,10 @@ struct WedgeFrame {
   uint64_t degenerate_wedges = 0;
 };
 
-// Builds the frame for `light`. With a zero radius there are no wedge faces and the umbra
+// Builds the wedges of `light`. With a zero radius there are no wedge faces and the umbra
 // volume is the hard shadow volume exactly (same clip vertices, same triangles), so every wedge
 // variant then gives the hard-shadow image (resolved by the hard rule, li_buffer.h).
-struct WedgeFrameOptions {
+struct LightWedgesOptions {
   VolumeMode volume_mode = VolumeMode::Auto;  // ZPass for the 2002 algorithm
   bool smooth_falloff = false;
   // 0: every mesh's own silhouette. +1 or -1: only the triangles edge-on to the light centre
@@ -62,7 +62,7 @@ struct WedgeFrameOptions {
   // (wedge_technique.cpp), as ShadowStencilOptions::casting_meshes for the coverage technique.
   const std::vector<uint8_t>* other_facing_meshes = nullptr;
 };
-WedgeFrame buildWedgeFrame(const WedgeFrameOptions& options, const Scene& scene,
+LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& scene,
                            const Light& light, const View& view, const EyeBuffers& eye);
 
 }  // namespace penumbra

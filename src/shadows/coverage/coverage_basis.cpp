@@ -1,4 +1,4 @@
-#include "shadows/coverage/coverage_frame.h"
+#include "shadows/coverage/coverage_basis.h"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 namespace penumbra {
 
-void frontHalfPlane(const CoverageFrame& f, const dvec3& normal, dvec2& slope, double& offset) {
+void frontHalfPlane(const CoverageBasis& f, const dvec3& normal, dvec2& slope, double& offset) {
   // A light point y = p + n / inv_depth + t (X / scale_t - offset_t) + b (Y / scale_b - offset_b)
   // is in front when normal . (y - p) > 0: linear in (X, Y).
   offset = glm::dot(normal, f.n) / f.inv_depth - glm::dot(normal, f.t) * f.offset_t -
@@ -14,14 +14,14 @@ void frontHalfPlane(const CoverageFrame& f, const dvec3& normal, dvec2& slope, d
   slope = dvec2(glm::dot(normal, f.t) / f.scale_t, glm::dot(normal, f.b) / f.scale_b);
 }
 
-double frontOfPlaneFraction(const CoverageFrame& f, const dvec3& normal) {
+double frontOfPlaneFraction(const CoverageBasis& f, const dvec3& normal) {
   dvec2 slope;
   double offset;
   frontHalfPlane(f, normal, slope, offset);
   return halfPlaneFraction(f.outline, slope, offset);
 }
 
-bool coverageFrame(const Light& light, const dvec3& p, CoverageFrame& f) {
+bool coverageBasis(const Light& light, const dvec3& p, CoverageBasis& f) {
   const dvec3 c(light.center);
   const dvec3 to_light = c - p;
   f.p = p;
@@ -29,7 +29,7 @@ bool coverageFrame(const Light& light, const dvec3& p, CoverageFrame& f) {
     const double d = glm::length(to_light), r = light.radius;
     if (!(d > r * (1.0 + 1e-6))) return false;
     // One division for n and the depth, and the disk's scale beside it (not after it): the
-    // frame is set up for every pixel an edge reaches, and its latency is that chain's.
+    // basis is set up for every pixel an edge reaches, and its latency is that chain's.
     f.inv_depth = 1.0 / d;
     f.n = to_light * f.inv_depth;
     planeBasis(f.n, f.t, f.b);

@@ -1,5 +1,5 @@
 #pragma once
-// The light as one visible point sees it, for the coverage soft shadow volumes: the frame of
+// The light as one visible point sees it, for the coverage soft shadow volumes: the basis of
 // the light's plane in which the light is the unit disk or the square [-1, 1]^2 (shape_coverage.h)
 // and edge end points become homogeneous 2D points (disk_coverage_kernel.h).
 //
@@ -8,7 +8,7 @@
 // oracle's rays fill, uniform in that disk's area where the oracle is uniform in solid angle
 // (Funk 2004, section 3.1.2, takes the disk of radius r and also calls the difference
 // negligible). A disk or rectangle light is its own plane, seen from either side.
-// The frame's basis (t, b, n) is right-handed with n from the point toward the light's plane,
+// The basis (t, b, n) is right-handed with n from the point toward the light's plane,
 // so that every shape turns the same way (the edge's sign, coverage_technique.cpp).
 #include "core/math.h"
 #include "scene/light.h"
@@ -16,7 +16,7 @@
 
 namespace penumbra {
 
-struct CoverageFrame {
+struct CoverageBasis {
   dvec3 p{0.0};
   dvec3 t{0.0}, b{0.0}, n{0.0};
   double inv_depth = 0.0;     // 1 / n . (c - p)
@@ -36,12 +36,12 @@ struct CoverageFrame {
 
 // Fraction of the light in front of the plane through the point with normal `normal` (the side
 // it points to): what the point's own surface leaves of the light.
-double frontOfPlaneFraction(const CoverageFrame& frame, const dvec3& normal);
-// The same plane as a half-plane of the frame's light plane: slope . (X, Y) + offset > 0 in front.
-void frontHalfPlane(const CoverageFrame& frame, const dvec3& normal, dvec2& slope, double& offset);
+double frontOfPlaneFraction(const CoverageBasis& basis, const dvec3& normal);
+// The same plane as a half-plane of the basis's light plane: slope . (X, Y) + offset > 0 in front.
+void frontHalfPlane(const CoverageBasis& basis, const dvec3& normal, dvec2& slope, double& offset);
 
 // False when the point sees the light from inside it (a sphere) or edge-on (in a disk's or
 // rectangle's plane): no edge coverage is defined there and the hard answer stands.
-bool coverageFrame(const Light& light, const dvec3& p, CoverageFrame& frame);
+bool coverageBasis(const Light& light, const dvec3& p, CoverageBasis& basis);
 
 }  // namespace penumbra
