@@ -19,7 +19,8 @@ if(PENUMBRA_BUILD_FUZZ)
            ${PROJECT_SOURCE_DIR}/src)
   target_compile_definitions(penumbra_fuzz_lib
     PUBLIC GLM_FORCE_XYZW_ONLY
-    PRIVATE PENUMBRA_DEFAULT_MODELS_DIR="${PROJECT_SOURCE_DIR}/../shared/models")
+    PRIVATE PENUMBRA_DEFAULT_MODELS_DIR="${PROJECT_SOURCE_DIR}/../shared/models"
+            PENUMBRA_SHIPPED_MODELS_DIR="${PROJECT_SOURCE_DIR}/models")
   target_link_libraries(penumbra_fuzz_lib
     PUBLIC glm::glm fmt::fmt TBB::tbb assimp::assimp meshoptimizer::meshoptimizer
            nlohmann_json::nlohmann_json hwy::hwy Threads::Threads PNG::PNG tinyexr::tinyexr)

@@ -6,7 +6,7 @@ set -euo pipefail
 build="${1:-build}"
 out="${2:-docs/images/wedge-accuracy}"
 mkdir -p "$out"
-for scene in spheres columns scenes/bunny-lowres.json scenes/stanford-bunny.json; do
+for scene in spheres columns scenes/bunny-lowres.json tests/data/scenes/stanford-bunny.json; do
   name="$(basename "$scene" .json)"
   "$build/penumbra" render "$scene" --width 640 --height 427 --quiet \
     --visibility "$out/$name-wedge.exr" --visibility-png "$out/$name-wedge.png" -o "$out/shaded.png"

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "metrics/shadow_boundary.h"
 #include "raster/eye_pass.h"
@@ -56,39 +57,48 @@ inline OracleComparison compareHardWithOracle(const Scene& scene, const View& vi
   return c;
 }
 
-// Whether every "models:" file the scene file names is in modelsDirectory(): a user's cache
+// Whether every "models:" file the scene file names can be read (modelPath()): a user's cache
 // may hold only the models npm ships, so tests over scene files skip the others one by one.
 inline bool sceneModelsPresent(const std::filesystem::path& scene_file) {
   for (const std::string& name : sceneFileModels(scene_file.string())) {
-    if (!std::filesystem::exists(std::filesystem::path(modelsDirectory()) / name)) return false;
+    if (!std::filesystem::exists(modelPath(name))) return false;
   }
   return true;
 }
 
-// Calls fn(path, scene) for every scene file in scenes/ whose models are present, in directory
-// order; the others get a skip line and are counted. Returns {scenes run, scenes skipped}.
+// The folders of scene files the suites render: scenes/ (every file renders on a fresh clone)
+// and tests/data/scenes/ (models the repository can neither ship nor fetch; skipped where no
+// models folder holds them).
+inline std::vector<std::filesystem::path> sceneFileFolders() {
+  const std::filesystem::path root(PENUMBRA_SOURCE_DIR);
+  return {root / "scenes", root / "tests" / "data" / "scenes"};
+}
+
+// Calls fn(path, scene) for every scene file of sceneFileFolders() whose models are present, in
+// directory order; the others get a skip line and are counted. Returns {run, skipped}.
 template <class Fn>
 std::pair<int, int> forEachSceneFileWithModels(Fn&& fn) {
-  const std::filesystem::path dir = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
   std::pair<int, int> counts{0, 0};
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".json") continue;
-    if (!sceneModelsPresent(entry.path())) {
-      std::printf("[ SKIPPED  ] %s: its models are not in %s\n",
-                  entry.path().filename().c_str(), modelsDirectory().c_str());
-      ++counts.second;
-      continue;
+  for (const std::filesystem::path& dir : sceneFileFolders()) {
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      if (entry.path().extension() != ".json") continue;
+      if (!sceneModelsPresent(entry.path())) {
+        std::printf("[ SKIPPED  ] %s: its models are not in %s\n",
+                    entry.path().filename().c_str(), modelsDirectory().c_str());
+        ++counts.second;
+        continue;
+      }
+      fn(entry.path(), loadSceneFile(entry.path().string()));
+      ++counts.first;
     }
-    fn(entry.path(), loadSceneFile(entry.path().string()));
-    ++counts.first;
   }
   return counts;
 }
 
-// Path of a shared model, or empty when the models are not available (tests then skip).
+// Path of a model ("models:" name), or empty when it is not available (tests then skip).
 inline std::string sharedModel(const std::string& file) {
-  const std::filesystem::path p = std::filesystem::path(modelsDirectory()) / file;
-  return std::filesystem::exists(p) ? p.string() : std::string();
+  const std::string p = modelPath(file);
+  return std::filesystem::exists(p) ? p : std::string();
 }
 
 }  // namespace penumbra::testing

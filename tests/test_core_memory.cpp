@@ -53,7 +53,7 @@ TEST_F(CoreMemory, FrameSizedBuffersStayMappedAfterFree) {
 // The passes of a frame allocate on the worker threads too, in their own arenas, which grow by
 // heaps of at most 64 MiB. A heap past an arena's first was given back to the kernel when the
 // frame freed it, and mapped again by the next frame: on dragon-res2 the eye pass took 45 ms
-// instead of 12 in some runs, all of it page faults (bench/README.md, 2026-11-28 third stop).
+// instead of 12 in some runs, all of it page faults (CHANGELOG.md, 2026-11-28, 61b4265..eee4103).
 TEST_F(CoreMemory, WorkerThreadHeapsStayMappedAfterFree) {
 #if defined(PENUMBRA_MALLOC_POLICY_APPLIES)
   // Five buffers of 20 MB (each under the 32 MiB mmap threshold): more than one heap's 64 MiB.

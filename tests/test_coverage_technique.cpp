@@ -101,7 +101,8 @@ TEST(CoverageTechnique, PenumbraErrorIsSmallAndHalfTheWedges) {
 // go black in its inner half. Against the 1024-ray oracle at 96x64: at most half the wedges.
 // penumbra error (measured 0.043 against 0.110 at 160x107). Skipped without the shared models.
 TEST(CoverageTechnique, OpenMeshPenumbraBeatsTheWedges) {
-  const std::string file = std::string(PENUMBRA_SOURCE_DIR) + "/scenes/stanford-bunny.json";
+  const std::string file =
+      std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/scenes/stanford-bunny.json";
   if (!testing::sceneModelsPresent(file)) GTEST_SKIP() << "shared models absent: " << file;
   const EyeFrame f = testing::makeEyeFrame(loadSceneFile(file), 96, 64);
   const Image<float> truth = oracle(f);

@@ -423,7 +423,8 @@ const json& goldenDigests() {
 // --- Scenes -----------------------------------------------------------------------------------
 
 struct SceneCase {
-  std::string key;        // in the golden file: "spheres", "scenes/bunny-lowres.json"
+  std::string key;        // in the golden file: "spheres", "scenes/bunny-lowres.json",
+                          // "tests/data/scenes/armadillo.json" (the path in the source tree)
   std::string test_name;  // gtest's: letters, digits and '_' only
   std::string file;       // empty for a built-in scene
 };
@@ -434,9 +435,11 @@ void PrintTo(const SceneCase& scene_case, std::ostream* os) { *os << scene_case.
 std::vector<SceneCase> sceneCases() {
   std::vector<SceneCase> cases;
   for (const std::string& name : builtinSceneNames()) cases.push_back({name, name, ""});
-  const std::filesystem::path folder = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
+  // scenes/ and tests/data/scenes/ (models the repository can neither ship nor fetch).
+  const std::filesystem::path root(PENUMBRA_SOURCE_DIR);
   std::vector<std::filesystem::path> files;
-  if (std::filesystem::is_directory(folder)) {
+  for (const std::filesystem::path& folder : {root / "scenes", root / "tests" / "data" / "scenes"}) {
+    if (!std::filesystem::is_directory(folder)) continue;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
       if (entry.path().extension() == ".json") files.push_back(entry.path());
     }
@@ -447,20 +450,19 @@ std::vector<SceneCase> sceneCases() {
     std::replace_if(
         test_name.begin(), test_name.end(), [](char ch) { return !std::isalnum(uint8_t(ch)); },
         '_');
-    cases.push_back({"scenes/" + file.filename().string(), test_name, file.string()});
+    cases.push_back({file.lexically_relative(root).generic_string(), test_name, file.string()});
   }
   return cases;
 }
 
-// The "models:" meshes a scene file names that are not in modelsDirectory().
+// The "models:" meshes a scene file names that cannot be read (modelPath()).
 std::vector<std::string> missingModels(const std::string& scene_file) {
   std::ifstream in(scene_file);
   const json doc = json::parse(in);
   std::vector<std::string> missing;
   for (const auto& mesh : doc.value("meshes", json::array())) {
     const std::string name = mesh.value("file", "");
-    if (name.starts_with("models:") &&
-        !std::filesystem::exists(std::filesystem::path(modelsDirectory()) / name.substr(7))) {
+    if (name.starts_with("models:") && !std::filesystem::exists(modelPath(name.substr(7)))) {
       missing.push_back(name);
     }
   }

@@ -98,14 +98,16 @@ TEST(SceneBuiltin, SceneForMeshStandsTheMeshOnTheFloor) {
   }
 }
 
-// Every scene file in scenes/ must load (those whose shared models are absent are skipped,
-// visibly): a broken scene file would only be noticed by a user.
+// Every scene file in scenes/ and tests/data/scenes/ must load (those whose models are absent
+// are skipped, visibly): a broken scene file would only be noticed by a user.
 TEST(SceneBuiltin, EverySceneFileLoads) {
-  const std::filesystem::path folder = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
-  ASSERT_TRUE(std::filesystem::is_directory(folder)) << folder;
+  const std::filesystem::path root(PENUMBRA_SOURCE_DIR);
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  for (const std::filesystem::path& folder : {root / "scenes", root / "tests" / "data" / "scenes"}) {
+    ASSERT_TRUE(std::filesystem::is_directory(folder)) << folder;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
+    }
   }
   std::sort(files.begin(), files.end());
   EXPECT_GE(files.size(), 13u);
@@ -118,8 +120,7 @@ TEST(SceneBuiltin, EverySceneFileLoads) {
     for (const auto& mesh : json["meshes"]) {
       if (!mesh.contains("file")) continue;
       const std::string name = mesh["file"];
-      if (name.starts_with("models:") &&
-          !std::filesystem::exists(std::filesystem::path(modelsDirectory()) / name.substr(7))) {
+      if (name.starts_with("models:") && !std::filesystem::exists(modelPath(name.substr(7)))) {
         models_present = false;
       }
     }

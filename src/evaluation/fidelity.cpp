@@ -235,7 +235,7 @@ std::vector<std::string> fidelityScenes(const std::vector<std::string>& scene_di
     try {
       for (const std::string& model : sceneFileModels(file)) {
         std::error_code exists_ec;
-        if (!fs::exists(fs::path(models) / model, exists_ec)) missing.push_back(model);
+        if (!fs::exists(modelPath(model), exists_ec)) missing.push_back(model);
       }
     } catch (const Error& e) {
       skipped.emplace_back(file, e.what());

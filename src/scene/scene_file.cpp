@@ -261,6 +261,19 @@ std::string userModelsCache() {
       .string();
 }
 
+std::string shippedModelsDirectory() {
+  return fs::path(PENUMBRA_SHIPPED_MODELS_DIR).lexically_normal().string();
+}
+
+std::string modelPath(const std::string& name) {
+  const fs::path in_models_folder = fs::path(modelsDirectory()) / name;
+  std::error_code ec;
+  if (fs::exists(in_models_folder, ec)) return in_models_folder.string();
+  const fs::path shipped = fs::path(shippedModelsDirectory()) / name;
+  if (fs::exists(shipped, ec)) return shipped.string();
+  return in_models_folder.string();
+}
+
 Scene loadSceneFile(const std::string& path) {
   std::error_code ec;
   PENUMBRA_CHECK(fs::exists(path, ec), "{}: scene file not found", path);

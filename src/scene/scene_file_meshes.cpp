@@ -167,11 +167,11 @@ Mesh readFileMesh(const JsonReader& reader, const Json& entry, const std::string
   const std::string resolved = resolveMeshPath(file, base_dir);
   std::error_code ec;
   if (file.starts_with(kModelsPrefix) && !fs::exists(resolved, ec)) {
-    reader.fail(file_path, fmt::format("{} is not in the models folder {} (run "
+    reader.fail(file_path, fmt::format("{} is not in the models folder {} nor in {} (run "
                                        "scripts/fetch-models.sh, or set PENUMBRA_MODELS to a "
                                        "folder holding it; 'penumbra scenes' lists what is "
                                        "missing)",
-                                       file, modelsDirectory()));
+                                       file, modelsDirectory(), shippedModelsDirectory()));
   }
   UpAxis up = UpAxis::Y;
   if (const Json* value = JsonReader::find(entry, "up")) {
@@ -231,7 +231,7 @@ bool isInsideModelsFolder(const std::string& file) {
 
 std::string resolveMeshPath(const std::string& file, const std::string& base_dir) {
   if (file.starts_with(kModelsPrefix)) {
-    return (fs::path(modelsDirectory()) / file.substr(kModelsPrefix.size())).string();
+    return modelPath(file.substr(kModelsPrefix.size()));
   }
   fs::path p(file);
   if (p.is_relative() && !base_dir.empty()) p = fs::path(base_dir) / p;

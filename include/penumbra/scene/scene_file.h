@@ -7,7 +7,7 @@
 namespace penumbra {
 
 // Reads a scene file. Relative mesh paths are relative to the scene file's folder; a path
-// starting with "models:" is looked up in modelsDirectory(). Throws penumbra::Error naming the
+// starting with "models:" is looked up with modelPath(). Throws penumbra::Error naming the
 // file and the offending key.
 Scene loadSceneFile(const std::string& path);
 // Same, from JSON text; `origin` names the text in messages, `base_dir` resolves relative paths.
@@ -20,5 +20,11 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
 std::string modelsDirectory();
 // $XDG_CACHE_HOME/penumbra/models, else ~/.cache/penumbra/models.
 std::string userModelsCache();
+// The models/ folder of the source tree: the models whose licences let the repository ship them.
+std::string shippedModelsDirectory();
+// Where "models:NAME" is read from: modelsDirectory()/NAME when it exists there, else
+// shippedModelsDirectory()/NAME when it exists there, else modelsDirectory()/NAME (absent; the
+// caller reports it). The models folder comes first so that PENUMBRA_MODELS can override.
+std::string modelPath(const std::string& name);
 
 }  // namespace penumbra
