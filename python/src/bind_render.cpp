@@ -1,5 +1,6 @@
 // penumbra.render (one frame, the technique prepared for it) and Renderer (prepared once, frame
 // after frame). Both release the GIL while the library works, so Python threads render at once.
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -15,6 +16,11 @@ namespace penumbra::python {
 namespace {
 
 using OptionTexts = std::map<std::string, std::string>;
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
 
 // The frame's settings; technique options by name (tile_size or tile-size) with values as the
 // command line takes them.
@@ -71,13 +77,16 @@ class Renderer {
   py::object render() {
     checkLightsForFrame(*scene_);
     std::shared_ptr<FrameResult> frame = freeFrame();
+    double render_ms = 0;
     {
       py::gil_scoped_release release;
       // One frame at a time per renderer: its shading table fills in as frames need it.
       const std::lock_guard<std::mutex> lock(mutex_);
+      const auto start = std::chrono::steady_clock::now();
       renderer_->render(*frame);
+      render_ms = msSince(start);
     }
-    return wrapFrame(std::move(frame), 0.0);
+    return wrapFrame(std::move(frame), 0.0, render_ms);
   }
 
   const std::shared_ptr<Scene>& scene() const { return scene_; }
@@ -115,12 +124,15 @@ void bindRender(py::module_& m) {
             makeFrameOptions(technique, width, height, threads, simd, options);
         checkLightsForFrame(*scene);
         auto frame = std::make_shared<FrameResult>();
+        double render_ms = 0;
         {
           py::gil_scoped_release release;
+          const auto start = std::chrono::steady_clock::now();
           *frame = renderFrame(*scene, frame_options);
+          render_ms = msSince(start);
         }
         const double prepare_ms = frame->total.time_ms.front().second;  // renderFrame's "prepare"
-        return wrapFrame(std::move(frame), prepare_ms);
+        return wrapFrame(std::move(frame), prepare_ms, render_ms);
       },
       py::arg("scene"), py::arg("technique"), py::arg("width"), py::arg("height"),
       py::arg("threads"), py::arg("simd"), py::arg("options"));

@@ -16,6 +16,7 @@ struct PyFrame {
   py::dict counters;
   py::dict times;
   double prepare_ms = 0;
+  double render_ms = 0;
   int width = 0, height = 0;
 };
 
@@ -52,7 +53,7 @@ py::dict counterDict(const Stats& stats) {
   return counters;
 }
 
-py::object wrapFrame(std::shared_ptr<FrameResult> frame, double prepare_ms) {
+py::object wrapFrame(std::shared_ptr<FrameResult> frame, double prepare_ms, double render_ms) {
   PyFrame out;
   const FrameResult& f = *frame;
   out.owner = py::capsule(new std::shared_ptr<FrameResult>(std::move(frame)), [](void* p) {
@@ -66,6 +67,7 @@ py::object wrapFrame(std::shared_ptr<FrameResult> frame, double prepare_ms) {
   out.counters = counterDict(f.total);
   out.times = passTimes(f.total);
   out.prepare_ms = prepare_ms;
+  out.render_ms = render_ms;
   out.width = f.color.width();
   out.height = f.color.height();
   return py::cast(std::move(out));
@@ -86,6 +88,9 @@ void bindFrame(py::module_& m) {
                     "Milliseconds per pass, summed over lights; 'prepare' when the technique was "
                     "prepared for this frame (penumbra.render).")
       .def_readonly("prepare_ms", &PyFrame::prepare_ms)
+      .def_readonly("render_ms", &PyFrame::render_ms,
+                    "Wall-clock milliseconds of the library's call that rendered the frame "
+                    "(preparation included for penumbra.render), without the binding's work.")
       .def_readonly("width", &PyFrame::width)
       .def_readonly("height", &PyFrame::height)
       .def_property_readonly("frame_ms",

@@ -9,8 +9,9 @@ namespace penumbra::python {
 
 // The Python object for `frame`: its arrays share one capsule holding `frame`, so the frame
 // lives while any array does, and `frame.use_count()` falls back to what the caller holds once
-// Python has dropped them all (Renderer reuses such frames).
-py::object wrapFrame(std::shared_ptr<FrameResult> frame, double prepare_ms);
+// Python has dropped them all (Renderer reuses such frames). `render_ms` is the wall-clock time
+// of the library's call that rendered it, for measuring what the binding adds.
+py::object wrapFrame(std::shared_ptr<FrameResult> frame, double prepare_ms, double render_ms);
 
 // The work counters by name. The one place that walks the Stats counters, so that where they
 // are declared can change without touching the rest of the module.
