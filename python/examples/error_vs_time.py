@@ -44,7 +44,7 @@ def measure(scene, technique, size, frames, oracle, penumbra_mask, **options):
     times = []
     for _ in range(frames):
         frame = renderer.render()
-        times.append(frame.frame_ms)
+        times.append(frame.render_ms)
     error = penumbra.compare(frame.visibility[0], oracle, mask=penumbra_mask)["mae"]
     return statistics.median(times), error
 
@@ -69,19 +69,23 @@ def main():
         print(f"reference {rays:4d} {oracle_points[-1][0]:8.2f} ms  penumbra MAE "
               f"{oracle_points[-1][1]:.4f}")
 
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for technique, (ms, error) in points.items():
-        ax.scatter(ms, error, s=40)
-        ax.annotate(technique, (ms, error), textcoords="offset points", xytext=(5, 4), fontsize=8)
-    ax.plot([p[0] for p in oracle_points], [p[1] for p in oracle_points], "k--", marker="o",
+    fig, ax = plt.subplots(figsize=(8.5, 4.5))
+    floor = 1e-5  # an error of 0 (the oracle's answer exactly) still shows on the log axis
+    markers = "osD^vP*Xh<>"
+    for index, (technique, (ms, error)) in enumerate(points.items()):
+        # A legend rather than labels beside the points: techniques of one family share an error.
+        ax.scatter(ms, max(error, floor), s=45, marker=markers[index % len(markers)],
+                   label=technique)
+    ax.plot([p[0] for p in oracle_points], [max(p[1], floor) for p in oracle_points], "k--",
+            marker="o",
             markersize=4, label="reference (oracle) at 4, 16, 64 rays")
     ax.set_xscale("log")
-    ax.set_yscale("symlog", linthresh=1e-3)
+    ax.set_yscale("log")
     ax.set_xlabel("frame time (ms, median of warm frames)")
     ax.set_ylabel(f"penumbra MAE vs {args.oracle_rays}-ray oracle")
     ax.set_title(f"{scene.name}, {size[0]}x{size[1]}: soft shadow techniques")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     fig.savefig(args.out, dpi=110)
