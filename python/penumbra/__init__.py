@@ -33,7 +33,8 @@ def load_scene(source, up="y"):
     {"vertices": array N x 3, "triangles": array M x 3} (numpy or nested lists; triangles
     counter-clockwise seen from the front) with the keys a file entry has ("name", "material",
     "transform", "fit"). Arrays get the file loader's checks and welding; a wrong shape, a
-    non-finite vertex or an index out of range raises penumbra.Error naming the mesh.
+    non-finite vertex or an index out of range raises penumbra.Error naming the mesh. A dict's
+    relative mesh file paths are relative to the current directory.
     """
     if isinstance(source, dict):
         return _scene_from_dict(source)
