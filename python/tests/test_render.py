@@ -18,7 +18,11 @@ def test_visibility_equals_the_cli_exr_bit_for_bit(cli, tmp_path):
     frame = penumbra.render("spheres", technique="exact", width=WIDTH, height=HEIGHT, samples=64)
     from_cli = penumbra.read_exr(str(exr))
     assert from_cli.shape == (HEIGHT, WIDTH)
-    assert np.array_equal(frame.visibility[0].view(np.uint32), from_cli.view(np.uint32))
+    differing = np.argwhere(frame.visibility[0].view(np.uint32) != from_cli.view(np.uint32))
+    assert len(differing) == 0, (
+        f"{len(differing)} pixels differ, first at (row, column) {differing[0].tolist()}: "
+        f"{frame.visibility[0][tuple(differing[0])]!r} here, {from_cli[tuple(differing[0])]!r} "
+        f"from the CLI")
     # And the frame has umbra and penumbra, so equality is not two empty images.
     visibility = frame.visibility[0]
     assert visibility.min() == 0.0 and np.any((visibility > 0.0) & (visibility < 1.0))
