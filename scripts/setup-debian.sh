@@ -10,7 +10,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev
   libtbb-dev libhwy-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-matplotlib
+  python3-matplotlib python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
   libegl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
   clang-14 libclang-rt-14-dev
 )

@@ -45,6 +45,7 @@
 #include <penumbra/scene/light.h>
 #include <penumbra/scene/load_mesh.h>
 #include <penumbra/scene/material.h>
+#include <penumbra/scene/mesh_arrays.h>
 #include <penumbra/scene/mesh.h>
 #include <penumbra/scene/scene.h>
 #include <penumbra/scene/scene_file.h>

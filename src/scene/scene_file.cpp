@@ -287,6 +287,11 @@ Scene loadSceneFile(const std::string& path) {
 
 Scene parseSceneJson(const std::string& text, const std::string& origin,
                      const std::string& base_dir) {
+  return parseSceneJson(text, origin, base_dir, {});
+}
+
+Scene parseSceneJson(const std::string& text, const std::string& origin,
+                     const std::string& base_dir, const std::vector<MeshArrays>& arrays) {
   const JsonReader reader(origin);
   const Json root = reader.parse(text);
   if (!root.is_object()) reader.fail("", "the scene must be a JSON object");
@@ -305,7 +310,7 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
   const Json& meshes = reader.required(root, "", "meshes");
   reader.expectArray(meshes, "meshes");
   for (size_t i = 0; i < meshes.size(); ++i) {
-    readMeshEntry(reader, meshes[i], JsonReader::element("meshes", i), base_dir, scene);
+    readMeshEntry(reader, meshes[i], JsonReader::element("meshes", i), base_dir, arrays, scene);
   }
   readLights(reader, reader.required(root, "", "lights"), scene, base_dir);
   if (const Json* settings = JsonReader::find(root, "settings")) {

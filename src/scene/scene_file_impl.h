@@ -1,16 +1,20 @@
 #pragma once
 // Internals of the scene file reader shared by scene_file.cpp and scene_file_meshes.cpp.
 #include <string>
+#include <vector>
 
 #include "scene/json_reader.h"
+#include "scene/mesh_arrays.h"
 #include "scene/scene.h"
 
 namespace penumbra {
 
 // Reads one entry of "meshes" (at key path `path`) and appends its mesh to scene.meshes;
-// materials must already be read (names resolve against scene.materials).
+// materials must already be read (names resolve against scene.materials). `arrays` are the
+// in-memory meshes an {"arrays": i} entry may name (scene_file.h).
 void readMeshEntry(const JsonReader& reader, const Json& entry, const std::string& path,
-                   const std::string& base_dir, Scene& scene);
+                   const std::string& base_dir, const std::vector<MeshArrays>& arrays,
+                   Scene& scene);
 
 // A mesh "file" value to a path: "models:NAME" in modelsDirectory(), relative paths against
 // base_dir, absolute paths as they are.

@@ -193,6 +193,32 @@ Mesh readFileMesh(const JsonReader& reader, const Json& entry, const std::string
   }
 }
 
+// {"arrays": i}: the program's in-memory mesh arrays[i] (scene_file.h).
+Mesh readArraysMesh(const JsonReader& reader, const Json& entry, const std::string& path,
+                    const std::vector<MeshArrays>& arrays) {
+  std::vector<std::string_view> keys = kCommonKeys;
+  keys.push_back("arrays");
+  reader.expectObject(entry, path, keys);
+  const std::string arrays_path = JsonReader::child(path, "arrays");
+  if (arrays.empty()) {
+    reader.fail(arrays_path, "names in-memory mesh arrays, which only a program gives (a scene "
+                             "file's meshes are \"file\" or \"generator\" entries)");
+  }
+  const int index = reader.integer(entry["arrays"], arrays_path);
+  if (index < 0 || size_t(index) >= arrays.size()) {
+    reader.fail(arrays_path, fmt::format("{} is out of range: {} mesh arrays were given", index,
+                                         arrays.size()));
+  }
+  const Json* name = JsonReader::find(entry, "name");
+  const std::string mesh_name =
+      name ? reader.string(*name, JsonReader::child(path, "name")) : fmt::format("arrays {}", index);
+  try {
+    return meshFromArrays(arrays[size_t(index)], mesh_name);
+  } catch (const Error& e) {
+    reader.fail(path, e.what());
+  }
+}
+
 Mesh readGeneratorMesh(const JsonReader& reader, const Json& entry, const std::string& path) {
   const std::string generator_path = JsonReader::child(path, "generator");
   const std::string kind = reader.string(entry["generator"], generator_path);
@@ -239,15 +265,21 @@ std::string resolveMeshPath(const std::string& file, const std::string& base_dir
 }
 
 void readMeshEntry(const JsonReader& reader, const Json& entry, const std::string& path,
-                   const std::string& base_dir, Scene& scene) {
+                   const std::string& base_dir, const std::vector<MeshArrays>& arrays,
+                   Scene& scene) {
   if (!entry.is_object()) reader.fail(path, "expected an object");
   const bool has_file = entry.contains("file");
   const bool has_generator = entry.contains("generator");
-  if (has_file == has_generator) {
-    reader.fail(path, "needs exactly one of \"file\" (a mesh file) or \"generator\"");
+  const bool has_arrays = entry.contains("arrays");
+  if (int(has_file) + int(has_generator) + int(has_arrays) != 1) {
+    reader.fail(path, arrays.empty()
+                          ? "needs exactly one of \"file\" (a mesh file) or \"generator\""
+                          : "needs exactly one of \"file\" (a mesh file), \"generator\" or "
+                            "\"arrays\" (mesh arrays given in memory)");
   }
-  Mesh mesh = has_file ? readFileMesh(reader, entry, path, base_dir)
-                       : readGeneratorMesh(reader, entry, path);
+  Mesh mesh = has_file        ? readFileMesh(reader, entry, path, base_dir)
+              : has_generator ? readGeneratorMesh(reader, entry, path)
+                              : readArraysMesh(reader, entry, path, arrays);
 
   mat4 transform(1.0f);
   const Json* fit = JsonReader::find(entry, "fit");

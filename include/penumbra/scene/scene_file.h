@@ -1,7 +1,9 @@
 #pragma once
 // The JSON scene format, documented in docs/scene-format.md.
 #include <string>
+#include <vector>
 
+#include <penumbra/scene/mesh_arrays.h>
 #include <penumbra/scene/scene.h>
 
 namespace penumbra {
@@ -13,6 +15,12 @@ Scene loadSceneFile(const std::string& path);
 // Same, from JSON text; `origin` names the text in messages, `base_dir` resolves relative paths.
 Scene parseSceneJson(const std::string& text, const std::string& origin,
                      const std::string& base_dir);
+// Same, with meshes given in memory: a "meshes" entry {"arrays": i} takes arrays[i]
+// (mesh_arrays.h), checked as meshFromArrays checks it, with the keys a file entry has besides
+// "file" and "up" ("name", "material", "transform", "fit"). Without arrays such an entry is an
+// error.
+Scene parseSceneJson(const std::string& text, const std::string& origin,
+                     const std::string& base_dir, const std::vector<MeshArrays>& arrays);
 
 // The folder "models:NAME" paths are looked up in, the first of: $PENUMBRA_MODELS when set;
 // ../shared/models beside the source tree when that folder exists (developers); the user's
