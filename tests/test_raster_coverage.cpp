@@ -1,5 +1,5 @@
 // Watertightness and fill-rule tests: shadow-volume counting depends on every pixel centre being
-// covered by exactly one of the triangles sharing an edge (DESIGN.md "Numeric conventions").
+// covered by exactly one of the triangles sharing an edge (README, Conventions).
 #include <gtest/gtest.h>
 
 #include <cmath>

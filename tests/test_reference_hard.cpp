@@ -103,9 +103,10 @@ TEST(ReferenceHard, ShadowOfSquareIsItsProjection) { checkSquareShadow(kNoPrimit
 
 TEST(ReferenceHard, ShadowOfSquareWithInconsistentTriangleIds) { checkSquareShadow(0); }
 
-// DESIGN.md: radius 0 degenerates to hard shadows and must give exactly the hard result; the
-// `hard` option on a large light must ignore its radius. Packets and single rays must agree.
-// If this failed, the three paths to one ray per pixel would disagree.
+// The contract (shadows/technique.h, TechniqueTraits::soft): radius 0 degenerates to hard shadows
+// and must give exactly the hard result; the `hard` option on a large light must ignore its radius.
+// Packets and single rays must agree. If this failed, the three paths to one ray per pixel would
+// disagree.
 TEST(ReferenceHard, PointLightHardFlagAndPacketsAgree) {
   Light point;
   point.center = vec3(-0.4f, 3.0f, 0.5f);

@@ -228,9 +228,9 @@ TEST_P(TechniqueConformance, OptionsReadBackAsSet) {
   EXPECT_FALSE(config.describe().empty());
 }
 
-// Workers own tiles or rows and counters are summed in a fixed order; SIMD kernels and their
-// scalar twins do the same float operations (DESIGN.md). Images and counters must not depend
-// on either, with the technique's defaults, on every light of two built-in scenes.
+// Workers own tiles or rows and counters are summed in a fixed order; SIMD kernels and their scalar
+// twins do the same float operations (CMakeLists.txt: -ffp-contract=off). Images and counters must
+// not depend on either, with the technique's defaults, on every light of two built-in scenes.
 TEST_P(TechniqueConformance, ThreadsAndSimdDoNotChangeTheResult) {
   for (const char* name : {"spheres", "multilight"}) {
     const Frame f = makeFrame(builtinScene(name), 96, 64);
@@ -254,7 +254,7 @@ TEST_P(TechniqueConformance, ThreadsAndSimdDoNotChangeTheResult) {
 }
 
 // A technique that claims soft shadows must give the hard shadow volume's image exactly when
-// the light has no radius (DESIGN.md numeric conventions); a ray tracer gives the hard oracle,
+// the light has no radius (README, Conventions); a ray tracer gives the hard oracle,
 // which may differ from the volume only on shadow boundaries (ties). A technique whose hard
 // limit is itself approximate (PCSS: the plain shadow map) declares how far from the volume it
 // stays (TechniqueTraits::zero_radius_mae_bound), and is held to that: the suite had no way to

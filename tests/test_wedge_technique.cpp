@@ -63,10 +63,10 @@ std::string shortName(const std::string& name) {
   return slash == std::string::npos ? name : name.substr(slash + 1);
 }
 
-// DESIGN.md: "radius 0 degenerates to hard shadows and must give exactly the hard-shadow
-// result". With r = 0 the umbra quads are the hard volume's quads bit for bit and no wedge has
-// an inside, so every variant must give the ShadowVolume image, pixel for pixel. The 2002
-// algorithm counts from the eye only, so it is held to z-pass.
+// The contract (shadows/technique.h, TechniqueTraits::soft): "radius 0 degenerates to hard shadows
+// and must give exactly the hard-shadow result". With r = 0 the umbra quads are the hard volume's
+// quads bit for bit and no wedge has an inside, so every variant must give the ShadowVolume image,
+// pixel for pixel. The 2002 algorithm counts from the eye only, so it is held to z-pass.
 TEST(WedgeTechnique, ZeroRadiusGivesTheHardShadowVolumeImage) {
   std::vector<std::string> names = exactScenes();
   names.push_back("multilight");
@@ -232,8 +232,9 @@ TEST(WedgeTechnique, CullingModesAndTileSizesGiveTheSameLiBuffer) {
   }
 }
 
-// Workers own tiles and counters are summed in tile order; the SIMD kernel and its scalar twin
-// do the same float operations (DESIGN.md): LI buffers and counters must not depend on either.
+// Workers own tiles and counters are summed in tile order; the SIMD kernel and its scalar twin do
+// the same float operations (CMakeLists.txt: -ffp-contract=off): LI buffers and counters must not
+// depend on either.
 TEST(WedgeTechnique, ThreadsAndSimdDoNotChangeLiOrCounters) {
   for (const std::string& name : {std::string("columns"), std::string("spheres")}) {
     const Scene scene = loadScene(name);

@@ -1,7 +1,7 @@
 #pragma once
-// The subcommands of the `penumbra` CLI. Each registers its options on the parser and runs
-// after parsing; behaviour lives in the library (DESIGN.md style rule 8), these only parse and
-// print. Errors are thrown (penumbra::Error and friends) and reported by main().
+// The subcommands of the `penumbra` CLI. Each registers its options on the parser and runs after
+// parsing; behaviour lives in the library, these only parse and print. Errors are thrown
+// (penumbra::Error and friends) and reported by main().
 #include <functional>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Penumbra's public API (DESIGN.md): load a scene, render a frame with a shadow technique, write
+// Penumbra's public API: load a scene, render a frame with a shadow technique, write
 // and compare the results.
 //
 //   penumbra::Scene scene = penumbra::loadScene("spheres");   // or a .json scene, or a mesh

@@ -49,7 +49,8 @@ py::dict passTimes(const Stats& stats) {
 
 py::dict counterDict(const Stats& stats) {
   py::dict counters;
-  for (const StatsCounter& counter : kStatsCounters) counters[counter.name] = stats.*counter.field;
+  stats.forEachCounter(
+      [&](const char* name, const char*, uint64_t value) { counters[name] = value; });
   return counters;
 }
 

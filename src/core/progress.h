@@ -1,6 +1,6 @@
 #pragma once
 // A small progress bar for long work (the oracle's rays, big scenes). No progress-bar library is
-// packaged in Debian 12 (DESIGN.md, Dependencies), so this is our own.
+// packaged in Debian 12, so this is our own.
 //
 // It draws on stderr only when stderr is a terminal: piped or logged output stays clean. Workers
 // call add() concurrently (an atomic counter); at most one of them redraws, at most ~10 times a

@@ -18,7 +18,7 @@ inline constexpr int kSubpixelSteps = 1 << kSubpixelBits;  // 16
 inline constexpr int kGuardBandPixels = 4096;
 inline constexpr int kMaxImageSize = 8192;  // kMaxImageSize + kGuardBandPixels < 2^14
 
-// Bin tiles: the unit of work a thread owns (DESIGN.md "Parallelism and SIMD").
+// Bin tiles: the unit of work a thread owns.
 inline constexpr int kBinTileLevel = 5;
 inline constexpr int kBinTileSize = 1 << kBinTileLevel;  // 32 pixels
 

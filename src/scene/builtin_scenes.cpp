@@ -17,7 +17,8 @@ struct BuiltinEntry {
   Scene (*make)();
 };
 
-// The papers' test scenes in spirit (DESIGN.md "Scenes"), in the order `penumbra scenes` lists.
+// The papers' test scenes in spirit (README, "What is in it"), in the order `penumbra scenes`
+// lists.
 constexpr BuiltinEntry kBuiltins[] = {
     {"spheres", makeSpheresScene},  {"columns", makeColumnsScene},
     {"fractal", makeFractalScene},  {"year2002", makeYear2002Scene},

@@ -1,7 +1,7 @@
 #pragma once
 // The eye's projection and the numeric conventions every pass shares.
 //
-// Depth convention (DESIGN.md "Numeric conventions"): reversed-Z with an infinite far plane.
+// Depth convention (README, Conventions): reversed-Z with an infinite far plane.
 // The projection maps a view-space point at distance w = -z_view in front of the eye to
 //   clip = (x_clip, y_clip, near * w_h, w)      (w_h is the point's homogeneous w: 1 or 0)
 //   depth = clip.z / clip.w = near / w          (1 at the near plane, 0 at infinity)

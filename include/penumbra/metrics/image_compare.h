@@ -1,6 +1,6 @@
 #pragma once
 // Error between two images of the same size: visibility buffers against the oracle's, or two
-// renders (DESIGN.md, metrics module; uses core only).
+// renders (the metrics module uses core only).
 //
 // Per-pixel error: |a - b| for gray images; for RGB the largest channel difference, so a pixel
 // is "off" when any channel is. Non-finite values (a NaN visibility is a bug somewhere) are not

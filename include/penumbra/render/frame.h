@@ -1,5 +1,5 @@
 #pragma once
-// One frame: the eye pass, a shadow technique per light, shading (DESIGN.md data flow).
+// One frame: the eye pass, a shadow technique per light, shading (README, Architecture).
 #include <memory>
 #include <vector>
 

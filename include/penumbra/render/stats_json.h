@@ -1,6 +1,6 @@
 #pragma once
-// What a frame did, for files and for people: the per-frame stats JSON (DESIGN.md, "The
-// technique contract": every counter and the time of every pass) and a one-line summary.
+// What a frame did, for files and for people: the per-frame stats JSON (every counter and the
+// time of every pass) and a one-line summary.
 #include <string>
 
 #include <penumbra/render/frame.h>

@@ -1,5 +1,5 @@
 #pragma once
-// Procedural scenes reproducing the papers' test scenes in spirit (DESIGN.md "Scenes").
+// Procedural scenes reproducing the papers' test scenes in spirit (README, "What is in it").
 #include <string>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The one technique contract (DESIGN.md): given the eye pass's buffers, a light, the scene and
+// The one technique contract: given the eye pass's buffers, a light, the scene and
 // the view, a technique writes the light visibility of every pixel's visible point, in [0, 1],
 // and its work counters. Techniques read the eye buffers and never write them.
 //

@@ -1,15 +1,15 @@
 // Roettger, Irion and Ertl, "Shadow Volumes Revisited" (WSCG 2002), sections 4.2 to 4.5.
 //
-// How the paper's shadow modes (Table 1) map onto Penumbra: the paper multiplies the frame
-// buffer by the normalised mask (black: by 0 or 1; attenuated: by 1/2 or 1) and for ambient
-// shadows draws the scene once more adding the ambient term. Penumbra's shading multiplies only
-// the direct light by the technique's visibility and always adds the ambient term itself
-// (DESIGN.md), so a mask technique writes the hard visibility the normalised mask encodes, 1
-// where it says lit, 0 where shadowed, in every mode; the mode changes the passes run (and
-// reported: the Stats' pass list has a "mask rectangle ..." entry per normalisation rectangle)
-// and the mask's values, not the image. Black and ambient shadows are then what Penumbra shows
-// with the scene's ambient term at 0 and as it is; the paper's attenuated shadows (the ambient
-// term dimmed too, which it calls physically incorrect) have no counterpart.
+// How the paper's shadow modes (Table 1) map onto Penumbra: the paper multiplies the frame buffer
+// by the normalised mask (black: by 0 or 1; attenuated: by 1/2 or 1) and for ambient shadows draws
+// the scene once more adding the ambient term. Penumbra's shading multiplies only the direct light
+// by the technique's visibility and always adds the ambient term itself (shadows/technique.h), so a
+// mask technique writes the hard visibility the normalised mask encodes, 1 where it says lit, 0
+// where shadowed, in every mode; the mode changes the passes run (and reported: the Stats' pass
+// list has a "mask rectangle ..." entry per normalisation rectangle) and the mask's values, not the
+// image. Black and ambient shadows are then what Penumbra shows with the scene's ambient term at 0
+// and as it is; the paper's attenuated shadows (the ambient term dimmed too, which it calls
+// physically incorrect) have no counterpart.
 #include "shadows/mask/mask_technique.h"
 
 #include <string>

@@ -368,7 +368,8 @@ LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& sce
     }
 
     // Umbra quads, in the hard shadow volume's vertex order and sign convention
-    // (volume_geometry.cpp: (v1, v0, v0', v1') with v0 < v1 and a signed weight).
+    // (shadows/stages/stencil/shadow_stencil.cpp: (v1, v0, v0', v1') with v0 < v1 and a signed
+    // weight).
     std::vector<uint32_t> inf_a(ws.umbra.size()), inf_b(ws.umbra.size());
     for (size_t k = 0; k < ws.umbra.size(); ++k) {
       const UmbraQuad& q = ws.umbra[k];

@@ -15,7 +15,7 @@
 // - Edges keep their vertices. The 2003/2004 follow-ups move the farther vertex of an edge
 //   toward the light; we do not: the front-plane quads are then exactly the quads of the
 //   original silhouette, watertight with their neighbours, and with r = 0 they are the hard
-//   shadow volume bit for bit (volume_geometry.cpp).
+//   shadow volume bit for bit (shadows/stages/caster_volumes/caster_volume.h).
 // - Each pairing of an incoming and an outgoing unit edge at a vertex (wedge_pairing.h) makes one
 //   side plane, the right plane of the incoming wedge and (negated) the left plane of the
 //   outgoing one, and one front-line direction that both wedges' ray_front_* and both umbra
@@ -101,7 +101,7 @@ WedgeSet buildWedges(const Mesh& mesh, const Silhouette& silhouette, const Light
   WedgeSet out;
   out.junction_vertices = pairs.junction_vertices;
 
-  // The hard shadow volume's direction at a vertex, in float exactly as volume_geometry.cpp
+  // The hard shadow volume's direction at a vertex, in float exactly as the caster volumes stage
   // computes it, and its double unit vector for the r == 0 rays.
   const auto hard = [&](uint32_t v) { return mesh.positions[v] - light.center; };
   const auto hardUnit = [&](uint32_t v) {

@@ -5,7 +5,7 @@
 // Numeric conventions: all wedge geometry is double precision world space (the mesh and the
 // light are float; they are widened once). Plane values are signed distances (unit normals).
 // The umbra quads' points at infinity are float directions, homogeneous w = 0, as in the hard
-// shadow volume (volume_geometry.cpp).
+// shadow volume (shadows/stages/caster_volumes/caster_volume.h).
 #include <cstdint>
 #include <vector>
 
@@ -39,8 +39,8 @@ struct WedgeIntensityConstants {
 // have 1, two-sided open ones may have 2 where two sheets share an edge), except the nearly
 // parallel edges (WedgeOptions::parallel_degrees), which get an umbra quad but no wedge.
 struct Wedge {
-  // The silhouette edge oriented a -> b so that the hard shadow-volume quad (b, a, a', b')
-  // (primes: extruded to infinity) faces out of the shadow (volume_geometry.h).
+  // The silhouette edge oriented a -> b so that the hard shadow-volume quad (b, a, a', b') (primes:
+  // extruded to infinity) faces out of the shadow (shadows/stages/silhouettes/silhouette.h).
   uint32_t va = 0, vb = 0;  // mesh vertex indices
   dvec3 a{0.0}, b{0.0};     // positions (world)
   // Inward planes: front (through a, b and f = c - r n), back (through a, b and c + r n, the
@@ -87,18 +87,19 @@ struct Wedge {
   uint32_t left_wedge = kNoWedgeLink, right_wedge = kNoWedgeLink;
 };
 
-// The umbra volume's side: the front-plane quad of each unit silhouette edge (a, b, and the
-// points at infinity along the front-plane/side-plane lines), which the 2004 paper (section 3)
-// rasterizes with -255 before the wedges add 255 s back. Like the hard quad it is the polygon
-// (b, a, a + inf_a at w = 0, b + inf_b at w = 0) facing out of the umbra volume, drawn as two
-// triangles as in volume_geometry.cpp. The first quads are those of the unit silhouette edges
-// (index = Wedge::unit_edge); after them come connectors, one per split vertex where two
-// wedges meet (WedgeSet::split_vertices, except splits across parallel runs): va == vb, so only
-// the triangle (v, v + inf_a, v + inf_b) at infinity has area, fanning between the two wedges'
-// front rays there. Invariant: every pairing's direction is shared bit for bit by the two
-// quads it joins (umbra[q].inf_b == umbra[umbra[q].next].inf_a), so the volume stays closed.
-// With a zero radius the directions are exactly vec3(position) - light.center, as in the hard
-// shadow volume (volume_geometry.cpp), so the umbra is then the hard shadow volume bit for bit.
+// The umbra volume's side: the front-plane quad of each unit silhouette edge (a, b, and the points
+// at infinity along the front-plane/side-plane lines), which the 2004 paper (section 3) rasterizes
+// with -255 before the wedges add 255 s back. Like the hard quad it is the polygon (b, a, a + inf_a
+// at w = 0, b + inf_b at w = 0) facing out of the umbra volume, drawn as two triangles as in
+// shadows/stages/stencil/shadow_stencil.cpp. The first quads are those of the unit silhouette edges
+// (index = Wedge::unit_edge); after them come connectors, one per split vertex where two wedges
+// meet (WedgeSet::split_vertices, except splits across parallel runs): va == vb, so only the
+// triangle (v, v + inf_a, v + inf_b) at infinity has area, fanning between the two wedges' front
+// rays there. Invariant: every pairing's direction is shared bit for bit by the two quads it joins
+// (umbra[q].inf_b == umbra[umbra[q].next].inf_a), so the volume stays closed. With a zero radius
+// the directions are exactly vec3(position) - light.center, as in the hard shadow volume
+// (shadows/stages/caster_volumes/caster_volume.h), so the umbra is then the hard shadow volume bit
+// for bit.
 struct UmbraQuad {
   uint32_t va = 0, vb = 0;        // a -> b as in Wedge
   vec3 inf_a{0.0f}, inf_b{0.0f};  // homogeneous w = 0 points: directions from a and from b

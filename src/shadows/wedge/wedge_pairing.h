@@ -13,7 +13,7 @@ namespace penumbra::wedge_detail {
 
 // One unit of silhouette multiplicity, oriented a -> b so that the hard quad (b, a, a', b')
 // faces out of the shadow: a = v0, b = v1 for multiplicity > 0, the reverse for < 0, exactly as
-// volume_geometry.cpp emits (v1, v0, v0', v1') with weight m.
+// the side quads of shadows/stages/silhouettes/silhouette.h are (v1, v0, v0', v1') with weight m.
 struct UnitEdge {
   uint32_t va = 0, vb = 0;
   uint32_t silhouette_edge = 0;  // index into Silhouette::edges
