@@ -107,9 +107,13 @@ int ViewerApp::run() {
     takeFrame();
     updateOracle();
     drawWindow();
-    ++window_frames_;
+    // --quit-after counts the frames after the script has run to its end (a script waiting
+    // for the oracle may take any number of frames).
+    const bool script_done = script_next_ == script_.size() && script_wait_frames_ == 0 &&
+                             script_wait_passes_ == 0;
+    if (script_done) ++window_frames_;
     if (args_.quit_after > 0 && window_frames_ >= args_.quit_after) quit_ = true;
-    const bool script_running = script_next_ < script_.size() && script_wait_passes_ == 0;
+    const bool script_running = !script_done && script_wait_passes_ == 0;
     if (!quit_ && !script_running) {
       // Sleep until the worker delivers or an event comes, not spin: the worker needs the cores.
       if (frames_->busy()) {

@@ -25,7 +25,7 @@ Options:
   --threads N               worker threads (0: all cores)
   --scalar                  scalar twins of every SIMD kernel
   --script FILE             replay input events (apps/viewer/input_script.h)
-  --quit-after N            quit after N window frames (headless runs and tests)
+  --quit-after N            quit N window frames after the script's end (headless runs, tests)
   --screenshot FILE.png     on quitting, the frame area as `penumbra render` writes it
   --visibility FILE.exr     with it, every light's visibility
   --window-screenshot FILE.png   on quitting, the whole window

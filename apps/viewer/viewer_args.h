@@ -15,7 +15,7 @@ struct ViewerArgs {
   int threads = 0;
   bool scalar = false;
   std::string script;
-  int quit_after = 0;  // window frames; 0: run until closed
+  int quit_after = 0;  // window frames after the script's end; 0: run until closed
   std::string screenshot;         // PNG of the frame area (the rendered image)
   std::string visibility;         // EXR per light, with the screenshot
   std::string window_screenshot;  // PNG of the whole window, panel included

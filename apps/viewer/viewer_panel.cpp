@@ -147,7 +147,7 @@ void compareSection(ViewerModel& model, const PanelView& view) {
   ImGui::SliderFloat("tolerance", &model.compare_tolerance, 0.0f, 0.5f, "%.3f");
   ImGui::SliderFloat("heat scale", &model.heatmap_scale, 0.01f, 1.0f, "%.3f");
   if (!view.comparison) {
-    ImGui::TextUnformatted("oracle: waiting for a full-size frame");
+    ImGui::TextUnformatted("oracle: its first pass is running");
     return;
   }
   const Comparison& c = *view.comparison;
