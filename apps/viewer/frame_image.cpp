@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace penumbra::viewer {
 
@@ -32,10 +33,24 @@ uint8_t stretch(float value, float lo, float hi) {
 }  // namespace
 
 Rgb8Image shadedImage(const FrameResult& frame) {
+  // The sRGB curve through a table: a pow per channel costs the window more than some frames
+  // take to render. 4096 steps over [0, 1] put a displayed code at most one off the PNG's
+  // (the screenshot is the PNG writer's, not this).
+  constexpr int kSteps = 4096;
+  static const std::vector<uint8_t> table = [] {
+    std::vector<uint8_t> t(kSteps + 1);
+    for (int i = 0; i <= kSteps; ++i) t[size_t(i)] = linearToSrgb8(float(i) / kSteps);
+    return t;
+  }();
+  const auto encode = [](float linear) {
+    // NaN compares false: it takes code 0, as linearToSrgb8 gives it.
+    const float clamped = linear > 0.0f ? std::min(linear, 1.0f) : 0.0f;
+    return table[size_t(clamped * kSteps + 0.5f)];
+  };
   Rgb8Image image(frame.color.width(), frame.color.height());
   for (size_t i = 0; i < image.size(); ++i) {
     const vec3& c = frame.color.data()[i];
-    image.data()[i] = glm::u8vec3(linearToSrgb8(c.x), linearToSrgb8(c.y), linearToSrgb8(c.z));
+    image.data()[i] = glm::u8vec3(encode(c.x), encode(c.y), encode(c.z));
   }
   return image;
 }

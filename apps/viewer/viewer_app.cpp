@@ -106,7 +106,12 @@ int ViewerApp::run() {
     requestFrame(input_this_frame_ || drag_button_ != 0 || ImGui::IsAnyItemActive());
     takeFrame();
     updateOracle();
-    drawWindow();
+    const auto now = std::chrono::steady_clock::now();
+    const auto since_present = now - last_present_;
+    if (since_present >= kPresentInterval || input_this_frame_) {
+      drawWindow();
+      last_present_ = now;
+    }
     // --quit-after counts the frames after the script has run to its end (a script waiting
     // for the oracle may take any number of frames).
     const bool script_done = script_next_ == script_.size() && script_wait_frames_ == 0 &&
@@ -116,10 +121,12 @@ int ViewerApp::run() {
     const bool script_running = !script_done && script_wait_passes_ == 0;
     if (!quit_ && !script_running) {
       // Sleep until the worker delivers or an event comes, not spin: the worker needs the cores.
+      // Never past the next presentation, when a frame waits to be shown.
+      const int wait_ms = last_present_ == now ? kIdleWaitMs : int(kPresentInterval.count());
       if (frames_->busy()) {
-        frames_->waitForFrame(kIdleWaitMs);
+        frames_->waitForFrame(wait_ms);
       } else {
-        SDL_WaitEventTimeout(nullptr, kIdleWaitMs);
+        SDL_WaitEventTimeout(nullptr, wait_ms);
       }
     }
   }

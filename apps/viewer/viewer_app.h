@@ -4,6 +4,7 @@
 // frame worker for a frame when the model changed (a preview while the user drags, the full
 // size when the view rests), shows the newest frame with its overlay or comparison, and draws
 // the panel.
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <string>
@@ -24,6 +25,10 @@ struct SDL_Texture;
 union SDL_Event;
 
 namespace penumbra::viewer {
+
+// The window is drawn at most this often (a 60 Hz display's rate): frames that arrive faster
+// are rendered but not all shown, so drawing the window never takes the cores from rendering.
+inline constexpr std::chrono::milliseconds kPresentInterval{16};
 
 class ViewerApp {
  public:
@@ -87,6 +92,7 @@ class ViewerApp {
   bool input_this_frame_ = false;
   bool quit_ = false;
   long window_frames_ = 0;
+  std::chrono::steady_clock::time_point last_present_{};
 
   // Script replay.
   std::vector<ScriptCommand> script_;
