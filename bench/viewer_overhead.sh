@@ -6,7 +6,7 @@
 #
 # Usage: bench/viewer_overhead.sh [BUILD_DIR] [FRAMES] [ROUNDS]
 # Prints one line per scene x technique: the medians over rounds of each round's median frame
-# time, and viewer / CLI (above 1: the viewer is slower).
+# time, and viewer / CLI (above 1: the viewer is slower); each round's pair goes to stderr.
 set -euo pipefail
 build=${1:-build}
 frames=${2:-20}
@@ -31,6 +31,9 @@ for scene in "${scenes[@]}"; do
       viewer=$(xvfb-run -a -s "-screen 0 1280x800x24" "$build/penumbra-view" "$scene" \
                  --technique "$technique" --width 640 --height 427 --bench "$frames")
       viewer_ms+=("$(sed -n 's/.*median frame interval \([0-9.]*\) ms.*/\1/p' <<<"$viewer")")
+      # Each round's pair, to stderr: on a shared machine the spread says how far to trust
+      # the medians.
+      echo "  round $r $scene $technique: viewer ${viewer_ms[-1]} ms, cli ${cli_ms[-1]} ms" >&2
     done
     v=$(printf '%s\n' "${viewer_ms[@]}" | median)
     c=$(printf '%s\n' "${cli_ms[@]}" | median)

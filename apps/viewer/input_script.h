@@ -18,6 +18,8 @@
 //   compare off|split|heatmap
 //   preview-scale S | threads N | simd on|off
 //   save-scene FILE | screenshot FILE | window-screenshot FILE
+//                                    once the events pushed so far are handled and the
+//                                    full-size frame of the view is rendered
 //   wait-oracle PASSES               wait until the oracle has accumulated PASSES passes
 #include <string>
 #include <vector>

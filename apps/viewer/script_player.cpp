@@ -87,6 +87,15 @@ void ViewerApp::pushDrag(const ScriptCommand& command) {
   if (ctrl) pushKey(SDLK_LCTRL, false);
 }
 
+void ViewerApp::settle() {
+  // The events the script pushed before this command take effect first, and the frame of the
+  // resulting view is there to be saved or shown.
+  SDL_Event event;
+  while (SDL_PollEvent(&event)) handleEvent(event);
+  waitForFullFrame();
+  shown_ = full_;
+}
+
 void ViewerApp::runScript() {
   if (script_wait_frames_ > 0) {
     --script_wait_frames_;
@@ -155,10 +164,13 @@ void ViewerApp::runScriptCommand(const ScriptCommand& command) {
     model_.simd = parseFlag(arg(0), "simd");
     ++model_.generation;
   } else if (name == "save-scene") {
+    settle();
     saveSceneNow(arg(0));
   } else if (name == "screenshot") {
+    settle();
     saveScreenshotNow(arg(0), "");
   } else if (name == "window-screenshot") {
+    settle();
     saveWindowNow(arg(0));
   }
 }

@@ -46,6 +46,7 @@ class ViewerApp {
   void runScript();
   void runScriptCommand(const ScriptCommand& command);
   void pushDrag(const ScriptCommand& command);
+  void settle();
   void requestFrame(bool interacting);
   void takeFrame();
   void updateOracle();

@@ -89,7 +89,9 @@ void ViewerApp::saveWindowNow(const std::string& path) {
   int width = 0, height = 0;
   PENUMBRA_CHECK(SDL_GetRendererOutputSize(renderer_, &width, &height) == 0,
                  "cannot read the window's size: {}", SDL_GetError());
-  // Drawn again and read before it is presented (after that the back buffer is undefined).
+  // Drawn again and read before it is presented (after that the back buffer is undefined),
+  // with the oracle's newest figures.
+  updateOracle();
   drawWindow(false);
   Image<glm::u8vec3> pixels(width, height);
   PENUMBRA_CHECK(SDL_RenderReadPixels(renderer_, nullptr, SDL_PIXELFORMAT_RGB24, pixels.data(),
