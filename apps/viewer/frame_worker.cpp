@@ -48,6 +48,21 @@ void FrameWorker::waitForFrame(int milliseconds) {
                       [this] { return finished_.has_value() || (!pending_ && !rendering_); });
 }
 
+void FrameWorker::setRepeat(bool repeat) {
+  {
+    std::lock_guard lock(mutex_);
+    repeat_ = repeat;
+    repeat_start_ = std::chrono::steady_clock::now();
+    finish_times_.clear();
+  }
+  wake_.notify_all();
+}
+
+std::vector<double> FrameWorker::finishTimes() const {
+  std::lock_guard lock(mutex_);
+  return finish_times_;
+}
+
 bool FrameWorker::busy() const {
   std::lock_guard lock(mutex_);
   return pending_.has_value() || rendering_;
@@ -58,10 +73,15 @@ void FrameWorker::run() {
     FrameRequest request;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [this] { return stop_ || pending_.has_value(); });
+      wake_.wait(lock, [this] { return stop_ || pending_.has_value() || (repeat_ && last_); });
       if (stop_) return;
-      request = std::move(*pending_);
-      pending_.reset();
+      if (pending_) {
+        request = std::move(*pending_);
+        pending_.reset();
+      } else {
+        request = *last_;
+      }
+      last_ = request;
       rendering_ = true;
     }
     DeliveredFrame frame = render(request);
@@ -69,6 +89,11 @@ void FrameWorker::run() {
       std::lock_guard lock(mutex_);
       finished_ = std::move(frame);
       rendering_ = false;
+      if (repeat_) {
+        finish_times_.push_back(std::chrono::duration<double, std::milli>(
+                                    std::chrono::steady_clock::now() - repeat_start_)
+                                    .count());
+      }
     }
     delivered_.notify_all();
   }

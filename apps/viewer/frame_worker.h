@@ -2,6 +2,7 @@
 // Renders frames on a background thread so the window never waits for a slow technique: the
 // window submits what it wants (the newest request replaces one not yet started) and takes
 // finished frames when they arrive.
+#include <chrono>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -49,6 +50,11 @@ class FrameWorker {
   void waitForFrame(int milliseconds);
   // True while a request is pending or being rendered.
   bool busy() const;
+  // Benchmarking: with `repeat`, the worker renders the last request again and again, never
+  // waiting for the window to take a frame, and records when each frame finished.
+  void setRepeat(bool repeat);
+  // Finishing times of the frames rendered since setRepeat(true), in milliseconds from then.
+  std::vector<double> finishTimes() const;
 
  private:
   void run();
@@ -66,6 +72,10 @@ class FrameWorker {
   std::optional<DeliveredFrame> finished_;
   bool rendering_ = false;
   bool stop_ = false;
+  bool repeat_ = false;
+  std::optional<FrameRequest> last_;  // what `repeat` renders again
+  std::chrono::steady_clock::time_point repeat_start_;
+  std::vector<double> finish_times_;
   std::thread thread_;
 };
 

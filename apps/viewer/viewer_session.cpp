@@ -68,53 +68,48 @@ void ViewerApp::saveOnQuit() {
   }
 }
 
-// Full-size frames back to back through the window's loop (events, texture upload, panel),
-// the next frame asked for as soon as one arrives so rendering never waits for the window,
-// which shows the newest frame at most every kPresentInterval (as run() does).
-// Prints the interval between arriving frames, the figure to set against `penumbra render
-// --frames N` (bench/viewer_overhead.sh).
+// Full-size frames back to back while the window loop runs (events, texture upload, panel):
+// the worker renders the same view again and again, never waiting for the window, which shows
+// the newest frame at most every kPresentInterval (as run() does). The frame interval is
+// measured from the worker's finishing times, the figure to set against `penumbra render
+// --frames N` (bench/viewer_overhead.sh); the window's drawing is timed too.
 void ViewerApp::runBench() {
-  constexpr int kWarmup = 3;  // as `penumbra render --frames`: the first frames fault in memory
-  std::vector<double> intervals, renders, draws;  // draws: the window's, each time it is shown
+  constexpr size_t kWarmup = 3;  // as `penumbra render --frames`: the first frames fault in memory
+  const size_t wanted = kWarmup + size_t(args_.bench_frames) + 1;
+  std::vector<double> draws;
   frames_->submit(makeRequest(false));
-  auto last = std::chrono::steady_clock::now();
-  for (int delivered_count = 0; delivered_count < kWarmup + args_.bench_frames && !quit_;) {
+  frames_->setRepeat(true);
+  while (frames_->finishTimes().size() < wanted && !quit_) {
     SDL_Event event;
     while (SDL_PollEvent(&event)) handleEvent(event);
-    frames_->waitForFrame(1000);
+    frames_->waitForFrame(int(kPresentInterval.count()));
     std::optional<DeliveredFrame> delivered = frames_->take();
     if (!delivered) continue;
     if (!delivered->error.empty()) throw Error(delivered->error);
-    frames_->submit(makeRequest(false));
-    const auto now = std::chrono::steady_clock::now();
-    if (delivered_count >= kWarmup) {
-      intervals.push_back(std::chrono::duration<double, std::milli>(now - last).count());
-      renders.push_back(delivered->render_ms);
-    }
-    last = now;
-    ++delivered_count;
     frame_ms_.push_back(float(delivered->render_ms));
     if (frame_ms_.size() > 120) frame_ms_.pop_front();
     shown_ = std::move(*delivered);
+    const auto now = std::chrono::steady_clock::now();
     if (now - last_present_ >= kPresentInterval) {
-      const auto draw_start = std::chrono::steady_clock::now();
       drawWindow();
       last_present_ = now;
-      if (delivered_count >= kWarmup) {
-        draws.push_back(std::chrono::duration<double, std::milli>(
-                            std::chrono::steady_clock::now() - draw_start)
-                            .count());
-      }
+      draws.push_back(std::chrono::duration<double, std::milli>(
+                          std::chrono::steady_clock::now() - now)
+                          .count());
     }
+  }
+  const std::vector<double> finished = frames_->finishTimes();
+  frames_->setRepeat(false);
+  std::vector<double> intervals;
+  for (size_t i = kWarmup + 1; i < finished.size(); ++i) {
+    intervals.push_back(finished[i] - finished[i - 1]);
   }
   const double interval = median(intervals);
   std::cout << fmt::format(
                    "viewer loop: {} frames {}x{} {}: median frame interval {:.3f} ms ({:.2f} "
-                   "frames/s), median render {:.3f} ms; the window drawn {} times, median {:.3f} "
-                   "ms\n",
+                   "frames/s); the window drawn {} times, median {:.3f} ms\n",
                    intervals.size(), model_.width, model_.height, techniqueConfig(model_).describe(),
-                   interval, interval > 0 ? 1000.0 / interval : 0.0, median(renders),
-                   draws.size(), median(draws))
+                   interval, interval > 0 ? 1000.0 / interval : 0.0, draws.size(), median(draws))
             << std::flush;
 }
 
