@@ -13,6 +13,7 @@ packages=(
   python3-matplotlib python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
   libegl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
   clang-14 libclang-rt-14-dev
+  libsdl2-dev libimgui-dev xvfb xauth
 )
 
 missing=()

@@ -21,6 +21,7 @@ Subcommand addBenchCommand(CLI::App& app);
 Subcommand addTechniquesCommand(CLI::App& app);
 Subcommand addConvertCommand(CLI::App& app);
 Subcommand addFidelityCommand(CLI::App& app);
+Subcommand addViewCommand(CLI::App& app);  // runs penumbra-view (apps/viewer/)
 // One technique's summary and options with their defaults (`penumbra techniques NAME`); throws
 // penumbra::Error for an unknown name.
 void printTechnique(const std::string& name);

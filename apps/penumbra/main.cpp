@@ -33,6 +33,7 @@ int run(int argc, char** argv) {
       penumbra::cli::addBenchCommand(app),
       penumbra::cli::addConvertCommand(app),
       penumbra::cli::addFidelityCommand(app),
+      penumbra::cli::addViewCommand(app),
   };
   // CLI11 would call an unknown command word a missing subcommand; name it instead.
   if (argc > 1 && argv[1][0] != '-') {

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/image_io.h"
+#include "scene/builtin_scenes.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_file_impl.h"
 
@@ -238,6 +239,57 @@ void readCamera(const JsonReader& reader, const Json& value, Camera& camera) {
   }
 }
 
+// Scene files that name a base scene, nested: a file naming itself (directly or through
+// others) would otherwise recurse until the stack runs out.
+thread_local int base_depth = 0;
+constexpr int kMaxBaseDepth = 32;
+
+// A file with "base": the geometry, materials and settings of a built-in scene, a scene file or
+// a mesh file (as `penumbra render` takes them; a relative path is relative to this file's
+// folder), with this file's camera, lights and settings in place of the base's. The viewer
+// saves what it shows this way (its camera and lights over the scene it opened).
+Scene parseSceneOverBase(const JsonReader& reader, const Json& root, const Json& base_value,
+                         const std::string& base_dir) {
+  for (const char* key : {"meshes", "materials"}) {
+    if (root.contains(key)) {
+      reader.fail(key, "a scene with a \"base\" takes its meshes and materials from the base");
+    }
+  }
+  const std::string base = reader.string(base_value, "base");
+  if (base.empty()) reader.fail("base", "must name a built-in scene, a scene file or a mesh file");
+  const bool relative = !isBuiltinScene(base) && fs::path(base).is_relative();
+  const std::string resolved = relative ? (fs::path(base_dir) / base).string() : base;
+  if (base_depth >= kMaxBaseDepth) {
+    reader.fail("base", fmt::format("bases nest more than {} deep (does a file name itself?)",
+                                    kMaxBaseDepth));
+  }
+  Scene scene;
+  ++base_depth;
+  try {
+    scene = loadScene(resolved);
+  } catch (const Error& e) {
+    --base_depth;
+    reader.fail("base", e.what());
+  }
+  --base_depth;
+  if (root.contains("name")) scene.name = reader.string(root["name"], "name");
+  if (root.contains("description")) (void)reader.string(root["description"], "description");
+  if (const Json* settings = JsonReader::find(root, "settings")) {
+    readSettings(reader, *settings, scene.settings);
+  }
+  if (const Json* camera = JsonReader::find(root, "camera")) readCamera(reader, *camera, scene.camera);
+  if (const Json* lights = JsonReader::find(root, "lights")) {
+    scene.lights.clear();
+    readLights(reader, *lights, scene, base_dir);
+  }
+  try {
+    scene.finalize();
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", reader.origin(), e.what()));
+  }
+  return scene;
+}
+
 }  // namespace
 
 std::string modelsDirectory() {
@@ -295,8 +347,11 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
   const JsonReader reader(origin);
   const Json root = reader.parse(text);
   if (!root.is_object()) reader.fail("", "the scene must be a JSON object");
-  reader.expectObject(root, "",
-                      {"name", "description", "camera", "lights", "materials", "meshes", "settings"});
+  reader.expectObject(root, "", {"name", "description", "base", "camera", "lights", "materials",
+                                 "meshes", "settings"});
+  if (const Json* base = JsonReader::find(root, "base")) {
+    return parseSceneOverBase(reader, root, *base, base_dir);
+  }
 
   Scene scene;
   scene.name = root.contains("name") ? reader.string(root["name"], "name")

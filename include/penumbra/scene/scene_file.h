@@ -22,6 +22,15 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
 Scene parseSceneJson(const std::string& text, const std::string& origin,
                      const std::string& base_dir, const std::vector<MeshArrays>& arrays);
 
+// A scene file holding `scene`'s camera, lights (every shape, textures inline) and settings over
+// the base scene `base` (a built-in scene's name, or the path of a scene file or a mesh file,
+// written as given; docs/scene-format.md, "base"): loading it gives `scene` back when `scene`'s
+// meshes and materials are the base's. Numbers are written so that they read back bit for bit.
+std::string sceneOverBaseJson(const Scene& scene, const std::string& base);
+// Writes sceneOverBaseJson to `path` (its folders created); throws penumbra::Error naming the
+// file when it cannot be written.
+void writeSceneOverBase(const std::string& path, const Scene& scene, const std::string& base);
+
 // The folder "models:NAME" paths are looked up in, the first of: $PENUMBRA_MODELS when set;
 // ../shared/models beside the source tree when that folder exists (developers); the user's
 // cache, userModelsCache(), which scripts/fetch-models.sh fills.
