@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "eye_frame_util.h"
+#include "hard_casters.h"
 #include "raster/rasterizer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/generators.h"
@@ -91,17 +92,19 @@ TEST(MaskValues, DoubleAndHalveOnEightBits) {
   EXPECT_FALSE(maskLit(maxBlendRectangle(kMaskHalf)));
 }
 
-// Per pixel, whether the paper's clamping argument covers it (docs/reproducing-hsv-and-masks.md):
-// the shadow volumes' counts per volume, from the integer stencil of each volume's positive and
-// negative polygons alone, run through the 8-bit states. Three-pass: every volume has at most
-// one polygon subtracting in front of (z-pass) or behind (z-fail) the point; max-blend: the
-// count so far plus the current volume's adding polygons never exceeds 8. Also the mask each
-// pixel must end with, computed from those counts (the blends of one direction compose, and a
-// volume's adding polygons come first), and the stencil's count.
+// Per pixel, where the 8 bits cannot hold the count (docs/reproducing-hsv-and-masks.md): the
+// shadow volumes' counts per volume (one per connected part of a caster, mask_volumes.h), from
+// the integer stencil of each volume's positive and negative polygons alone, run through the
+// 8-bit states in the order shadow_mask.cpp draws them: a volume's halving polygons, then its
+// doubling ones. `beyond`: some volume's halvings took the pixel below 1/255 (three-pass: more
+// than six subtracting polygons in front of (z-pass) or behind (z-fail) the point while lit;
+// max-blend: more than eight adding ones so far). Also the mask each pixel must end with, and
+// the stencil's count.
 struct LimitOracle {
   std::vector<char> beyond;
   std::vector<char> simulated_lit;
   std::vector<int32_t> count;
+  size_t beyondPixels() const { return size_t(std::count(beyond.begin(), beyond.end(), 1)); }
 };
 
 LimitOracle limitOracle(const Frame& f, const Light& light, VolumeMode mode, MaskNormalisation n) {
@@ -113,7 +116,6 @@ LimitOracle limitOracle(const Frame& f, const Light& light, VolumeMode mode, Mas
   o.simulated_lit.assign(pixels, 0);
   o.count.assign(pixels, 0);
   std::vector<uint32_t> mask(pixels, maskInitialValue(n));
-  std::vector<int32_t> depth(pixels, 0);  // three-pass: exponent; max-blend: count so far
   const bool positive_doubles = maskPositiveDoubles(n);
   for (size_t first = 0; first < volumes.setup.size();) {
     size_t end = first;
@@ -133,18 +135,12 @@ LimitOracle limitOracle(const Frame& f, const Light& light, VolumeMode mode, Mas
     }
     for (size_t i = 0; i < pixels; ++i) {
       const int32_t pos = signed_counts[0][i], neg = -signed_counts[1][i];
-      if (n == MaskNormalisation::ThreePass) {
-        if (neg > 1) o.beyond[i] = 1;
-      } else {
-        if (depth[i] + pos > 8) o.beyond[i] = 1;
-        depth[i] += pos - neg;
-      }
       o.count[i] += pos - neg;
-      const auto step = [](uint32_t v, bool doubles, int32_t k) {
-        k = std::min<int32_t>(k, kMaskMaxSteps);
-        return k == 0 ? v : (doubles ? maskDouble(v, k) : maskHalve(v, k));
-      };
-      mask[i] = step(step(mask[i], positive_doubles, pos), !positive_doubles, neg);
+      const int32_t halvings = std::min<int32_t>(positive_doubles ? neg : pos, 30);
+      const int32_t doublings = std::min<int32_t>(positive_doubles ? pos : neg, kMaskMaxSteps);
+      if (halvings > 0 && maskHalvingLoses(mask[i], halvings)) o.beyond[i] = 1;
+      if (halvings > 0) mask[i] = maskHalve(mask[i], std::min<int32_t>(halvings, kMaskMaxSteps));
+      if (doublings > 0) mask[i] = maskDouble(mask[i], doublings);
     }
     first = end;
   }
@@ -183,6 +179,9 @@ TechniqueConfig maskConfig(const MaskConfig& c, VolumeMode mode, int scale = 1) 
 struct Agreement {
   size_t covered = 0, beyond = 0, beyond_differing = 0, within_differing = 0, unexplained = 0;
   size_t negative_count = 0;  // ties where the stencil's count is negative: the mask says lit
+  // Pixels (covered or not) beyond the limit, as the test's oracle and the technique's
+  // mask_saturated_pixels counter count them.
+  size_t all_beyond = 0, counted_saturated = 0;
 };
 
 // Compares every configuration with `volume` in `mode` on every light of the frame.
@@ -195,6 +194,8 @@ Agreement compareWithVolumes(const Frame& f, VolumeMode mode, const std::string&
       const LimitOracle limit = limitOracle(f, light, mode, c.normalisation);
       const TechniqueResult mask =
           renderShadows(maskConfig(c, mode), f.scene, light, f.view, f.eye);
+      a.counted_saturated += mask.stats.counter("mask_saturated_pixels");
+      a.all_beyond += limit.beyondPixels();
       for (size_t i = 0; i < limit.beyond.size(); ++i) {
         if (!(f.eye.depth.depth[i] > 0.0f) || f.eye.primitive[i] == kNoPrimitive) continue;
         ++a.covered;
@@ -239,6 +240,12 @@ TEST(MaskTechnique, FullResolutionMatchesVolumesWithinTheEightBitLimit) {
       EXPECT_EQ(a.within_differing, 0u) << name << " " << volumeModeName(mode);
       EXPECT_EQ(a.unexplained, 0u) << name << " " << volumeModeName(mode);
       EXPECT_LE(a.negative_count, a.covered / 1000) << name << " " << volumeModeName(mode);
+      // Only fractal's terrain (one connected, folded sheet) goes beyond the limit, in front of
+      // the point with z-pass (a few pixels, none differing) and behind it with z-fail.
+      if (name != "fractal") {
+        EXPECT_EQ(a.beyond, 0u) << name << " " << volumeModeName(mode);
+      }
+      EXPECT_EQ(a.counted_saturated, a.all_beyond) << name << " " << volumeModeName(mode);
     }
   }
 }
@@ -291,7 +298,60 @@ TEST(MaskTechnique, FullResolutionMatchesVolumesOnSharedModels) {
     const Agreement a = compareWithVolumes(f, VolumeMode::Auto, name);
     EXPECT_EQ(a.within_differing, 0u) << name;
     EXPECT_EQ(a.unexplained, 0u) << name;
+    EXPECT_EQ(a.counted_saturated, a.all_beyond) << name;
   }
+}
+
+// Every scene file whose models are present and the rough terrain under a low light
+// (scenes/failure-modes/), at 96 x 64 and at the grids a half- and a quarter-resolution mask is
+// drawn on (48 x 32, 24 x 16: section 4.5 draws the mask there with its own depth pass and
+// magnifies it): both masks, both normalisations, give `volume`'s image at every pixel but those
+// they count in mask_saturated_pixels and the ties of a negative count. These are the scans, sculpts, CAD parts and multi-part
+// models on which the paper's drawing order lost thousands of pixels. If this failed, a caster
+// with many folds would lose shadow silently again.
+TEST(MaskTechnique, SceneFilesAndTerrainMatchVolumesAtEveryMaskResolution) {
+  const std::filesystem::path dir = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
+  std::vector<std::filesystem::path> files;
+  for (const auto& folder : {dir, dir / "failure-modes"})
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  size_t scenes = 0;
+  for (const std::filesystem::path& file : files) {
+    if (!testing::sceneModelsPresent(file)) {
+      std::printf("[ SKIPPED  ] %s: its models are not present\n", file.filename().c_str());
+      continue;
+    }
+    ++scenes;
+    const Scene scene = loadSceneFile(file.string());
+    for (const int scale : {1, 2, 4}) {
+      const Frame f = testing::makeEyeFrame(scene, 96 / scale, 64 / scale);
+      size_t differing = 0, covered = 0;
+      uint64_t saturated = 0;
+      for (const Light& light : f.scene.lights) {
+        const TechniqueResult volume = renderShadows(TechniqueConfig("volume"), f.scene, light,
+                                                     f.view, f.eye);
+        for (const MaskConfig& c : kFullResolutionConfigs) {
+          const TechniqueResult mask =
+              renderShadows(maskConfig(c, VolumeMode::Auto), f.scene, light, f.view, f.eye);
+          for (size_t i = 0; i < mask.visibility.size(); ++i) {
+            differing += mask.visibility[i] != volume.visibility[i];
+            covered += f.eye.depth.depth[i] > 0.0f;
+          }
+          saturated += mask.stats.counter("mask_saturated_pixels");
+        }
+      }
+      std::printf("[ masks    ] %-24s 1/%d grid: %zu pixel-configs differ from volume, %llu "
+                  "saturated\n",
+                  file.filename().c_str(), scale, differing, (unsigned long long)saturated);
+      // Besides the counted pixels, the negative-count ties (a point on a volume polygon whose
+      // subtracting polygon counts without its adding one: the stencil's != 0 says shadowed,
+      // the mask cannot go below lit) as FullResolutionMatchesVolumesWithinTheEightBitLimit
+      // allows them, here at most one per 200 covered pixels (4 of 1,500 at teapot-npm's 24 x 16).
+      EXPECT_LE(differing, saturated + covered / 200) << file.filename() << " 1/" << scale;
+    }
+  }
+  EXPECT_GT(scenes, 0u) << "the terrain needs no models: at least it must run";
 }
 
 }  // namespace test_mask_technique
@@ -342,40 +402,76 @@ float centreVisibility(const TechniqueConfig& config, const Scene& scene) {
   return r.visibility.at(32, 24);
 }
 
+// Pixels where the mask and `volume` differ, over the whole frame, and the mask's own count of
+// pixels it could not hold (mask_saturated_pixels).
+struct FrameAgreement {
+  size_t differing = 0;
+  uint64_t saturated = 0;
+};
+FrameAgreement frameAgreement(const TechniqueConfig& config, const Scene& scene) {
+  const Frame f = testing::makeEyeFrame(scene, 64, 48);
+  const TechniqueResult volume =
+      renderShadows(TechniqueConfig("volume", VolumeOptions{VolumeMode::ZPass}), f.scene,
+                    f.scene.lights[0], f.view, f.eye);
+  const TechniqueResult r = renderShadows(config, f.scene, f.scene.lights[0], f.view, f.eye);
+  FrameAgreement a;
+  for (size_t i = 0; i < r.visibility.size(); ++i) a.differing += r.visibility[i] != volume.visibility[i];
+  a.saturated = r.stats.counter("mask_saturated_pixels");
+  return a;
+}
+
 // The 8-bit limit (docs/reproducing-hsv-and-masks.md), on the pixel the tests above cannot aim
 // at: a ground point in shadow, seen through k layers of shadow volume.
-//  - k volumes in a row: the clamping argument of section 4.2 holds for any k (each volume
-//    doubles and halves once), both normalisations right up to 12.
-//  - k stacked volumes (the point inside all k, the count k): right up to 12, though three-pass
-//    holds only 1/2 or 1 from k = 2 and max-blend sits at 2^-8 from k = 8: the count is lost
-//    but never needed.
-//  - one caster of k boxes in a row (one volume the ray crosses 2k - 1 times, all its front
-//    faces first): three-pass loses the point from k = 3 (1/4 * 2^3 clamps at 1, then two
-//    halvings leave 1/4: lit), max-blend from k = 9 (1 halved 9 times stops at 2^-8, doubled 8
-//    times back to 1: lit).
+//  - k volumes in a row, k stacked volumes (the point inside all k, the count k), and one caster
+//    of k boxes in a row (k connected parts, so k volumes): right for any k, nothing saturated.
+//    The paper's order (each volume's front faces first) lost the one-caster row from k = 3
+//    with three-pass: 1/4 * 2^3 clamps at 1, two halvings leave 1/4, lit.
+//  - a comb of k teeth (one connected part: one volume the ray enters k times): its halvings
+//    come first, so three-pass holds six exits below 1/4 and max-blend eight entries below 1.
+//    The point under tooth 0 is right for any k with three-pass (k - 1 exits: when they go
+//    past 2^-8 the value ends too high, still shadowed) and up to k = 8 with max-blend (k
+//    entries halve 1 down to 2^-8 at most; at 9 the k - 1 doublings bring it back to 1: lit).
+//    Past the limit the mask counts the pixels (mask_saturated_pixels), and every pixel that
+//    differs from `volume` is among them.
 // `volume` says shadowed every time: the scene does what the test claims. If this failed, the
-// blends would round or clamp otherwise than mask_values.h says, or the limit would have moved.
+// blends would round or clamp otherwise than mask_values.h says, the halvings would not come
+// first, or the mask would lose a pixel without counting it.
 TEST(MaskTechnique, EightBitLimitOnKLayersOfVolume) {
   const MaskConfig& three_pass = kFullResolutionConfigs[0];
   const MaskConfig& max_blend = kFullResolutionConfigs[2];
-  for (const int k : {1, 2, 3, 8, 9, 12}) {
-    for (const bool in_a_row : {true, false}) {
-      for (const bool one_caster : {false, true}) {
-        if (!in_a_row && one_caster) continue;  // stacked boxes in one mesh overlap their volumes
-        const Scene scene = boxesOverGround(k, in_a_row, one_caster);
-        const std::string what = std::to_string(k) + (in_a_row ? " in a row" : " stacked") +
-                                 (one_caster ? ", one caster" : ", k casters");
-        ASSERT_EQ(centreVisibility(TechniqueConfig("volume", VolumeOptions{VolumeMode::ZPass}), scene),
-                  0.0f)
-            << what;
-        const bool three_pass_right = !(in_a_row && one_caster) || k <= 2;
-        const bool max_blend_right = !(in_a_row && one_caster) || k <= 8;
-        EXPECT_EQ(centreVisibility(maskConfig(three_pass, VolumeMode::ZPass), scene),
-                  three_pass_right ? 0.0f : 1.0f)
-            << what << ", three-pass";
-        EXPECT_EQ(centreVisibility(maskConfig(max_blend, VolumeMode::ZPass), scene),
-                  max_blend_right ? 0.0f : 1.0f)
-            << what << ", max-blend";
+  for (const int k : {1, 2, 3, 5, 6, 7, 8, 9, 12}) {
+    for (int layout = 0; layout < 4; ++layout) {
+      const bool in_a_row = layout != 1, one_caster = layout >= 2, comb = layout == 3;
+      const Scene scene =
+          comb ? testing::combOverGround(k) : boxesOverGround(k, in_a_row, one_caster);
+      const std::string what = std::to_string(k) +
+                               (comb ? "-tooth comb"
+                                     : (in_a_row ? " in a row" : " stacked") +
+                                           std::string(one_caster ? ", one caster" : ", k casters"));
+      ASSERT_EQ(centreVisibility(TechniqueConfig("volume", VolumeOptions{VolumeMode::ZPass}), scene),
+                0.0f)
+          << what;
+      const bool max_blend_right = !comb || k <= 8;
+      EXPECT_EQ(centreVisibility(maskConfig(three_pass, VolumeMode::ZPass), scene), 0.0f)
+          << what << ", three-pass";
+      EXPECT_EQ(centreVisibility(maskConfig(max_blend, VolumeMode::ZPass), scene),
+                max_blend_right ? 0.0f : 1.0f)
+          << what << ", max-blend";
+      for (const MaskConfig* c : {&three_pass, &max_blend}) {
+        const FrameAgreement a = frameAgreement(maskConfig(*c, VolumeMode::ZPass), scene);
+        const std::string config = what + (c == &three_pass ? ", three-pass" : ", max-blend");
+        std::printf("[ masks    ] %-32s %zu pixels differ from volume, %llu saturated\n",
+                    config.c_str(), a.differing, (unsigned long long)a.saturated);
+        EXPECT_LE(a.differing, a.saturated) << config;
+        // Max-blend also runs out below 2^-8 when a point lies in more than eight volumes (the
+        // stacked boxes from k = 9): flagged, though a shadowed point stays shadowed.
+        const bool deep_stack = !in_a_row && c == &max_blend && k > 8;
+        if ((!comb || k <= 5) && !deep_stack) {
+          EXPECT_EQ(a.saturated, 0u) << config;
+        }
+        if (comb && k == 12) {
+          EXPECT_GT(a.saturated, 0u) << config;
+        }
       }
     }
   }

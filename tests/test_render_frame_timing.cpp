@@ -48,6 +48,37 @@ TEST(FrameTiming, MedianOfEvenAndOddCounts) {
   EXPECT_EQ(medianOf({4.0, 1.0, 3.0, 2.0}), 2.5);
 }
 
+// A technique that runs two passes at once reports minus their double-counted time as a pass
+// (exact_technique.cpp: "overlap"). The line must print no negative time: if this failed, a
+// reader would see "overlap -1.70" and take it for a pass that ran in negative time.
+TEST(FrameTiming, ConcurrentPassesPrintNoNegativeTime) {
+  FrameTimings t;
+  t.frame_ms = {10.0};
+  t.pass_median_ms = {{"eye", 1.0}, {"silhouette", 3.0}, {"edges", 2.5}, {"overlap", -1.7},
+                      {"shade", 0.5}};
+  const std::string line = frameTimingsLine(t);
+  EXPECT_FALSE(std::regex_search(line, std::regex("-[0-9]"))) << line;
+  EXPECT_NE(line.find("overlap: the passes before ran concurrently, 1.70 of their time counted "
+                      "twice, shade 0.50 ms"),
+            std::string::npos)
+      << line;
+  EXPECT_EQ(passTimeText("edges", 2.5, 1), "edges 2.5");
+}
+
+// The exact technique's real pass list, through the CLI's timing line: no negative number.
+TEST(FrameTiming, ExactTechniqueLinePrintsNoNegativeTime) {
+  const Scene scene = builtinScene("spheres");
+  FrameOptions options;
+  options.width = 48;
+  options.height = 32;
+  options.technique = TechniqueConfig("exact");
+  const FrameRenderer renderer(scene, options);
+  FrameResult frame;
+  const std::string line = frameTimingsLine(timeFrames(renderer, 2, 0, frame));
+  EXPECT_NE(line.find("overlap"), std::string::npos) << line;
+  EXPECT_FALSE(std::regex_search(line, std::regex("-[0-9]"))) << line;
+}
+
 using testing::CliRun;
 class FrameTimingCli : public testing::CliTest {};
 

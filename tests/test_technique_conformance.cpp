@@ -15,6 +15,7 @@
 
 #include "core/parallel.h"
 #include "eye_frame_util.h"
+#include "hard_casters.h"
 #include "metrics/shadow_boundary.h"
 #include "oracle_cache.h"
 #include "scene/builtin_scenes.h"
@@ -160,6 +161,16 @@ bool sameOutput(const LightsResult& a, const LightsResult& b, std::string& what)
   return true;
 }
 
+// Whether a technique claims the hard volume's image where the light has no radius: rasterized
+// and not claiming the oracle's own answer (`exact` techniques differ from the volume at ties),
+// and either hard within twice `volume`'s error bound or soft and exactly the volume at radius 0.
+bool claimsVolumesImage(const TechniqueTraits& traits) {
+  if (traits.ray_traced || traits.exact) return false;
+  return traits.soft
+             ? traits.zero_radius_mae_bound == 0.0
+             : traits.covered_mae_bound <= 2.0 * findTechnique("volume").traits.covered_mae_bound;
+}
+
 class TechniqueConformance : public ::testing::TestWithParam<std::string> {
  protected:
   const TechniqueInfo& info() const { return findTechnique(GetParam()); }
@@ -298,6 +309,32 @@ TEST_P(TechniqueConformance, ZeroRadiusGivesTheHardShadow) {
   }
 }
 
+// Casters whose volume an eye ray enters many times (hard_casters.h): a comb, one connected
+// non-convex mesh whose five teeth's shadows a ray grazing the ground crosses one after another
+// (depth complexity 5 within one volume), and a grid of sixteen boxes merged into one mesh
+// under a low light (most of the floor in several boxes' shadows). A technique that claims the
+// hard volume's image (claimsVolumesImage; the lights here have no radius) must give it at every
+// pixel. The built-in scenes' casters are convex or nearly so; if this failed, a technique would
+// count one caster's volume right only where a ray enters it once.
+TEST_P(TechniqueConformance, HardCastersGiveTheVolumesImage) {
+  if (!claimsVolumesImage(info().traits)) GTEST_SKIP() << GetParam() << " does not claim the volume's image";
+  const Scene scenes[] = {testing::combOverGround(5), testing::boxGridUnderLowLight()};
+  for (const Scene& scene : scenes) {
+    const Frame f = makeFrame(scene);
+    const LightsResult volume = renderAll(TechniqueConfig("volume"), f);
+    const LightsResult r = renderAll(TechniqueConfig(GetParam()), f);
+    size_t differing = 0, shadowed = 0;
+    for (size_t i = 0; i < volume.lights[0].visibility.size(); ++i) {
+      differing += r.lights[0].visibility[i] != volume.lights[0].visibility[i];
+      shadowed += volume.lights[0].visibility[i] == 0.0f && f.eye.depth.depth[i] > 0.0f;
+    }
+    std::printf("[ conform  ] %-12s %-20s %zu pixels differ from volume (%zu shadowed)\n",
+                GetParam().c_str(), scene.name.c_str(), differing, shadowed);
+    EXPECT_GT(shadowed, size_t(kWidth * kHeight / 20)) << scene.name << ": the scene casts little";
+    EXPECT_EQ(differing, 0u) << GetParam() << " " << scene.name;
+  }
+}
+
 // Error against the oracle on the built-in scenes, within the bounds the technique declares
 // (TechniqueTraits): 1024 rays for soft techniques, one ray to the centre for hard ones. A
 // technique that claims more accuracy than it has fails here.
@@ -407,6 +444,16 @@ TEST_P(TechniqueConformance, SurvivesDegenerateAndHostileMeshes) {
       for (size_t i = 0; i < result.visibility.size(); ++i)
         bad += !(result.visibility[i] >= 0.0f && result.visibility[i] <= 1.0f);
       EXPECT_EQ(bad, 0u) << GetParam() << ": " << c.what;
+    }
+    // A hard technique that claims the volume's image gives it here too (the soft ones' lights
+    // have a radius in these scenes).
+    if (!info().traits.soft && claimsVolumesImage(info().traits)) {
+      const LightsResult volume = renderAll(TechniqueConfig("volume"), f);
+      size_t differing = 0;
+      for (size_t l = 0; l < volume.lights.size(); ++l)
+        for (size_t i = 0; i < volume.lights[l].visibility.size(); ++i)
+          differing += r.lights[l].visibility[i] != volume.lights[l].visibility[i];
+      EXPECT_EQ(differing, 0u) << GetParam() << ": " << c.what << " differs from volume";
     }
   }
 }

@@ -50,13 +50,19 @@ FrameTimings timeFrames(const FrameRenderer& renderer, int frames, int warmup, F
   return t;
 }
 
+std::string passTimeText(const std::string& name, double ms, int decimals) {
+  if (ms >= 0.0) return fmt::format("{} {:.{}f}", name, ms, decimals);
+  return fmt::format("{}: the passes before ran concurrently, {:.{}f} of their time counted twice",
+                     name, -ms, decimals);
+}
+
 std::string frameTimingsLine(const FrameTimings& t) {
   std::string line = fmt::format(
       "{} warm frame{} ({} warm-up): min {:.2f}, median {:.2f}, max {:.2f} ms", t.frame_ms.size(),
       t.frame_ms.size() == 1 ? "" : "s", t.warmup, t.minMs(), t.medianMs(), t.maxMs());
   const char* separator = "; median per pass: ";
   for (const auto& [name, ms] : t.pass_median_ms) {
-    line += fmt::format("{}{} {:.2f}", separator, name, ms);
+    line += separator + passTimeText(name, ms, 2);
     separator = ", ";
   }
   return line + " ms";

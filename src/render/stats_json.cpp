@@ -13,6 +13,7 @@
 #include "core/output_file.h"
 #include "core/parallel.h"
 #include "core/simd_dispatch.h"
+#include "render/frame_timing.h"
 #include "scene/mesh_report.h"
 
 namespace penumbra {
@@ -73,7 +74,7 @@ int effectiveThreads(const FrameOptions& options) {
 std::string passList(const Stats& s) {
   std::string text;
   for (const auto& [name, ms] : s.time_ms) {
-    text += fmt::format("{}{} {:.1f}", text.empty() ? "" : ", ", name, ms);
+    text += (text.empty() ? "" : ", ") + passTimeText(name, ms, 1);
   }
   return text;
 }
@@ -175,7 +176,7 @@ std::string frameSummaryLine(const Scene& scene, const FrameOptions& options,
       --it->second;
       continue;
     }
-    line += fmt::format(", {} {:.1f} ms", name, ms);
+    line += ", " + passTimeText(name, ms, 1) + " ms";
   }
   line += fmt::format("; frame {:.1f} ms", result.total.totalMs());
   // Every counter the frame touched, shared or the technique's own, by its name with spaces.

@@ -26,19 +26,23 @@ struct MaskTarget {
   int stride;
   int x0 = 0, y0 = 0;
   MaskLayout layout = MaskLayout::Alpha8;
+  // One byte per pixel, at the depth's element: set to 1 where a halving lost a power of two
+  // (maskHalvingLoses). The SIMD kernel touches only written pixels' bytes.
+  uint8_t* saturated = nullptr;
 };
 inline constexpr int kMaskKernelPadding = 64;
 
 // One polygon's blend: `steps` doublings (saturating at 255) or halvings (rounding up), 1 to
 // kMaskMaxSteps, at covered pixels with a surface where the depth rule holds. Counts covered
-// pixels (each reads the depth once) and pixels written, as the stencil kernel does.
+// pixels (each reads the depth once) and pixels written, as the stencil kernel does. Returns the
+// number of pixels whose halving lost a power of two (each also flagged in target.saturated).
 struct MaskBlend {
   bool doubles = true;
   int steps = 1;
 };
-void maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule, const MaskTarget& target,
-                KernelCounts& counts, bool simd);
-void maskKernelScalar(const TileEdges& e, MaskBlend blend, DepthRule rule,
+uint64_t maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule,
+                    const MaskTarget& target, KernelCounts& counts, bool simd);
+uint64_t maskKernelScalar(const TileEdges& e, MaskBlend blend, DepthRule rule,
                       const MaskTarget& target, KernelCounts& counts);
 
 }  // namespace penumbra

@@ -4,9 +4,10 @@
 
 namespace penumbra {
 
-void maskKernelScalar(const TileEdges& e, MaskBlend blend, DepthRule rule,
+uint64_t maskKernelScalar(const TileEdges& e, MaskBlend blend, DepthRule rule,
                       const MaskTarget& target, KernelCounts& counts) {
   const int bytes = maskBytesPerPixel(target.layout);
+  uint64_t lost = 0;
   // Covered: inside all three edges (>= 0).
   forEachCoveredPixel(e, [&](int x, int y) {
     ++counts.covered;
@@ -19,11 +20,16 @@ void maskKernelScalar(const TileEdges& e, MaskBlend blend, DepthRule rule,
     // The blend on the pixel's 8-bit value; with RGBA8 on R, G and B alike.
     uint8_t* p = target.mask + i * size_t(bytes);
     const uint32_t v = p[0];
+    if (!blend.doubles && maskHalvingLoses(v, blend.steps)) {
+      ++lost;
+      target.saturated[i] = 1;
+    }
     const uint8_t w = uint8_t(blend.doubles ? maskDouble(v, blend.steps) : maskHalve(v, blend.steps));
     p[0] = w;
     if (target.layout == MaskLayout::Rgba8) p[1] = p[2] = w;
     ++counts.writes;
   });
+  return lost;
 }
 
 }  // namespace penumbra

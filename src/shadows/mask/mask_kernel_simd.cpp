@@ -21,12 +21,61 @@ namespace penumbra {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-void MaskKernelSimd(const TileEdges& e, MaskBlend blend, DepthRule rule,
-                    const MaskTarget& target, KernelCounts& counts) {
+// Flags the written lanes whose halving loses a power of two (mask_values.h: maskHalvingLoses);
+// returns how many. Rare (only past the 8 bits' headroom), so the flags are set lane by lane.
+template <class DI>
+uint64_t FlagLostHalvings(DI di, hn::Vec<DI> old, hn::Mask<DI> write, int steps,
+                          uint8_t* saturated) {
+  const auto one = hn::Set(di, 255);  // acting as 256
+  const auto value = hn::Add(old, hn::IfThenElseZero(hn::Eq(old, one), hn::Set(di, 1)));
+  const auto lost = hn::And(write, hn::Lt(value, hn::Set(di, 1 << steps)));
+  if (hn::AllFalse(di, lost)) return 0;
+  HWY_ALIGN int32_t flags[hn::MaxLanes(di)];
+  hn::Store(hn::IfThenElseZero(lost, hn::Set(di, 1)), di, flags);
+  for (size_t lane = 0; lane < hn::Lanes(di); ++lane)
+    if (flags[lane] != 0) saturated[lane] = 1;
+  return hn::CountTrue(di, lost);
+}
+
+// One vector of pixels' blend at the lanes in `write`, pixel `pixel` of the target the first
+// lane's; returns the lanes whose halving lost a power of two.
+template <class DI>
+uint64_t BlendPixels(DI di, hn::Mask<DI> write_i, size_t pixel, MaskBlend blend,
+                     const MaskTarget& target) {
+  const hn::RebindToUnsigned<DI> du;
+  const hn::Rebind<uint8_t, DI> d8;
+  const int steps = blend.steps;
+  // mask_values.h: maskDouble / maskHalve.
+  const auto apply = [&](hn::Vec<DI> v) {
+    return blend.doubles ? hn::Min(hn::ShiftLeftSame(v, steps), hn::Set(di, 255))
+                         : hn::ShiftRightSame(hn::Add(v, hn::Set(di, (1 << steps) - 1)), steps);
+  };
+  uint64_t lost = 0;
+  if (target.layout == MaskLayout::Rgba8) {
+    // R = G = B = the mask, A kept: one 32-bit pixel per lane.
+    uint32_t* p = reinterpret_cast<uint32_t*>(target.mask) + pixel;
+    const auto write_u = hn::RebindMask(du, write_i);
+    const auto old = hn::MaskedLoad(write_u, du, p);
+    const auto old_i = hn::BitCast(di, hn::And(old, hn::Set(du, 0xffu)));
+    if (!blend.doubles) lost = FlagLostHalvings(di, old_i, write_i, steps, target.saturated + pixel);
+    const auto v = hn::BitCast(du, apply(old_i));
+    const auto grey = hn::Or(v, hn::Or(hn::ShiftLeft<8>(v), hn::ShiftLeft<16>(v)));
+    hn::BlendedStore(hn::Or(hn::AndNot(hn::Set(du, 0xffffffu), old), grey), write_u, du, p);
+  } else {
+    // The whole vector of bytes is read and written back, unchanged where not written (the
+    // buffer's padding covers a vector past the tile's last pixel).
+    uint8_t* p = target.mask + pixel;
+    const auto old = hn::PromoteTo(di, hn::LoadU(d8, p));
+    if (!blend.doubles) lost = FlagLostHalvings(di, old, write_i, steps, target.saturated + pixel);
+    hn::StoreU(hn::DemoteTo(d8, hn::IfThenElse(write_i, apply(old), old)), d8, p);
+  }
+  return lost;
+}
+
+uint64_t MaskKernelSimd(const TileEdges& e, MaskBlend blend, DepthRule rule,
+                        const MaskTarget& target, KernelCounts& counts) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
-  const hn::RebindToUnsigned<decltype(df)> du;
-  const hn::Rebind<uint8_t, decltype(di)> d8;  // as many byte lanes as float lanes
   const int lanes = int(hn::Lanes(df));
   const auto iota_i = hn::Iota(di, 0);
   const hn::Vec<decltype(di)> lane_step[3] = {hn::Mul(hn::Set(di, e.dx[0]), iota_i),
@@ -38,22 +87,12 @@ void MaskKernelSimd(const TileEdges& e, MaskBlend blend, DepthRule rule,
   const auto minus_one = hn::Set(di, -1);
   const auto da = hn::Set(df, e.da);
   const auto zero = hn::Zero(df);
-  const int steps = blend.steps;
-  const auto one = hn::Set(di, 255);
-  const auto round_up = hn::Set(di, (1 << steps) - 1);
-  // mask_values.h: maskDouble / maskHalve.
-  const auto apply = [&](hn::Vec<decltype(di)> v) {
-    return blend.doubles ? hn::Min(hn::ShiftLeftSame(v, steps), one)
-                         : hn::ShiftRightSame(hn::Add(v, round_up), steps);
-  };
-  const auto low_byte = hn::Set(du, 0xffu);
-  const bool rgba = target.layout == MaskLayout::Rgba8;
   const RowSpans spans(e);
   int y_lo, y_hi;
-  if (!spans.rows(y_lo, y_hi)) return;
+  if (!spans.rows(y_lo, y_hi)) return 0;
   // Each row's span, a batch of rows at a time (row_spans_simd-inl.h).
   BatchedRowSpans row_spans(spans, y_lo, y_hi);
-  uint64_t covered = 0, writes = 0;
+  uint64_t covered = 0, writes = 0, lost = 0;
   for (int y = y_lo; y <= y_hi; ++y) {
     int x_lo, x_hi;
     if (!row_spans.at(y, x_lo, x_hi)) continue;
@@ -85,26 +124,12 @@ void MaskKernelSimd(const TileEdges& e, MaskBlend blend, DepthRule rule,
       if (hn::AllFalse(df, write)) continue;
       writes += hn::CountTrue(df, write);
       const auto write_i = hn::RebindMask(di, write);
-      const size_t pixel = row_offset + size_t(x - target.x0);
-      if (rgba) {
-        // R = G = B = the mask, A kept: one 32-bit pixel per lane.
-        uint32_t* p = reinterpret_cast<uint32_t*>(target.mask) + pixel;
-        const auto write_u = hn::RebindMask(du, write);
-        const auto old = hn::MaskedLoad(write_u, du, p);
-        const auto v = hn::BitCast(du, apply(hn::BitCast(di, hn::And(old, low_byte))));
-        const auto grey = hn::Or(v, hn::Or(hn::ShiftLeft<8>(v), hn::ShiftLeft<16>(v)));
-        hn::BlendedStore(hn::Or(hn::AndNot(hn::Set(du, 0xffffffu), old), grey), write_u, du, p);
-      } else {
-        // The whole vector of bytes is read and written back, unchanged where not written
-        // (the buffer's padding covers a vector past the tile's last pixel).
-        uint8_t* p = target.mask + pixel;
-        const auto old = hn::PromoteTo(di, hn::LoadU(d8, p));
-        hn::StoreU(hn::DemoteTo(d8, hn::IfThenElse(write_i, apply(old), old)), d8, p);
-      }
+      lost += BlendPixels(di, write_i, row_offset + size_t(x - target.x0), blend, target);
     }
   }
   counts.covered += covered;
   counts.writes += writes;
+  return lost;
 }
 
 }  // namespace HWY_NAMESPACE
@@ -116,13 +141,10 @@ namespace penumbra {
 
 HWY_EXPORT(MaskKernelSimd);
 
-void maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule, const MaskTarget& target,
-                KernelCounts& counts, bool simd) {
-  if (useSimd(simd)) {
-    HWY_DYNAMIC_DISPATCH(MaskKernelSimd)(e, blend, rule, target, counts);
-  } else {
-    maskKernelScalar(e, blend, rule, target, counts);
-  }
+uint64_t maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule,
+                    const MaskTarget& target, KernelCounts& counts, bool simd) {
+  if (useSimd(simd)) return HWY_DYNAMIC_DISPATCH(MaskKernelSimd)(e, blend, rule, target, counts);
+  return maskKernelScalar(e, blend, rule, target, counts);
 }
 
 }  // namespace penumbra
@@ -132,9 +154,9 @@ void maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule, const MaskT
 
 namespace penumbra {
 
-void maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule, const MaskTarget& target,
-                KernelCounts& counts, bool) {
-  maskKernelScalar(e, blend, rule, target, counts);
+uint64_t maskKernel(const TileEdges& e, MaskBlend blend, DepthRule rule,
+                    const MaskTarget& target, KernelCounts& counts, bool) {
+  return maskKernelScalar(e, blend, rule, target, counts);
 }
 
 }  // namespace penumbra

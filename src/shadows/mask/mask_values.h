@@ -26,6 +26,13 @@ inline constexpr int kMaskMaxSteps = 9;
 
 inline uint32_t maskDouble(uint32_t v, int k) { return std::min<uint32_t>(v << k, kMaskOne); }
 inline uint32_t maskHalve(uint32_t v, int k) { return (v + (1u << k) - 1u) >> k; }
+// Whether k halvings of v lose a power of two: v holds 2^-j (j <= 8; 255 acting as 256), and
+// 2^-(j+k) is below the smallest value the 8 bits hold (1 = 2^-8) exactly when v < 2^k. The
+// pixel's value is then too high by the lost factor: its count is no longer recoverable (the
+// mask's only inexact step once the halvings are drawn before the doublings, shadow_mask.cpp).
+inline bool maskHalvingLoses(uint32_t v, int k) {
+  return (v == kMaskOne ? 256u : v) < (1u << k);
+}
 
 // Section 4.2: every pixel starts at 1/4, front faces double, back faces halve (three-pass
 // normalisation); section 4.4: it starts at 1, front faces halve, back faces double (max-blend).

@@ -1,14 +1,71 @@
 #include "shadows/mask/mask_volumes.h"
 
+#include <numeric>
+
 #include "core/timer.h"
 #include "shadows/stages/caster_volumes/caster_volume.h"
 
 namespace penumbra {
 
+uint32_t connectedParts(const Mesh& mesh, std::vector<uint32_t>& part_of_vertex) {
+  // Union-find over the vertices the triangles share (the mesh's positions are welded).
+  std::vector<uint32_t> parent(mesh.positions.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  const auto find = [&](uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    const uint32_t a = find(mesh.indices[i]);
+    parent[find(mesh.indices[i + 1])] = a;
+    parent[find(mesh.indices[i + 2])] = a;
+  }
+  constexpr uint32_t kNone = ~0u;
+  std::vector<uint32_t> part_of_root(parent.size(), kNone);
+  part_of_vertex.assign(parent.size(), 0);
+  uint32_t parts = 0;
+  for (const uint32_t v : mesh.indices) {
+    uint32_t& part = part_of_root[find(v)];
+    if (part == kNone) part = parts++;
+    part_of_vertex[v] = part;
+  }
+  return parts;
+}
+
+namespace {
+
+// The caster's volume polygons as shadow_stencil.cpp draws them (without its owners, which
+// `volume` does not use): side quads (v1, v0, v0', v1') from the light centre to infinity, and
+// with z-fail the caps; with each polygon's connected part in `part_of_polygon`.
+ClipTriangles casterPolygons(const Mesh& mesh, const vec3& centre, const View& view,
+                             const EyeBuffers& eye, CasterVolume& volume,
+                             const std::vector<uint32_t>& part_of_vertex,
+                             std::vector<uint32_t>& part_of_polygon) {
+  ClipTriangles polygons(eye.clip_vertices);
+  appendExtrudedVertices(mesh, centre, view, volume, polygons);
+  const uint32_t finite = volume.finite, infinite = volume.infinite;
+  const uint8_t flags = volume.zfail ? kZFail : 0;
+  for (const SilhouetteEdge& e : volume.silhouette.edges) {
+    polygons.add(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags);
+    polygons.add(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags);
+    part_of_polygon.insert(part_of_polygon.end(), 2, part_of_vertex[e.v0]);
+  }
+  if (volume.zfail) {
+    forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
+      polygons.add(a, b, c, weight, flags);
+      part_of_polygon.push_back(part_of_vertex[a < infinite ? a - finite : a - infinite]);
+    });
+  }
+  return polygons;
+}
+
+}  // namespace
+
 MaskVolumes maskVolumes(const Scene& scene, const vec3& centre, const View& view,
                         const EyeBuffers& eye, VolumeMode mode, Stats& stats) {
   PassTimer timer(stats, "silhouette");
   MaskVolumes out;
+  std::vector<uint32_t> part_of_vertex, part_of_polygon, sources, first_of_part;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     CasterVolume volume = casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto);
@@ -16,25 +73,28 @@ MaskVolumes maskVolumes(const Scene& scene, const vec3& centre, const View& view
     // A light inside a closed caster has no silhouette from its centre, but the caps of the
     // z-fail volume still enclose everything outside the caster: only z-pass has nothing to draw.
     if (volume.silhouette.edges.empty() && !volume.zfail) continue;
-    // As shadow_stencil.cpp draws them (without its owners, which `volume` does not use):
-    // side quads (v1, v0, v0', v1') from the light centre to infinity, and with z-fail the caps.
-    ClipTriangles polygons(eye.clip_vertices);
-    appendExtrudedVertices(mesh, centre, view, volume, polygons);
-    const uint32_t finite = volume.finite, infinite = volume.infinite;
-    const uint8_t flags = volume.zfail ? kZFail : 0;
-    for (const SilhouetteEdge& e : volume.silhouette.edges) {
-      polygons.add(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags);
-      polygons.add(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags);
-    }
-    if (volume.zfail) {
-      forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
-        polygons.add(a, b, c, weight, flags);
-      });
-    }
-    const std::vector<SetupTriangle> setup = setupTriangles(polygons, view.width, view.height);
+    const uint32_t parts = connectedParts(mesh, part_of_vertex);
+    part_of_polygon.clear();
+    const ClipTriangles polygons =
+        casterPolygons(mesh, centre, view, eye, volume, part_of_vertex, part_of_polygon);
+    const std::vector<SetupTriangle> setup =
+        setupTriangles(polygons, view.width, view.height, &sources);
     stats.triangles += setup.size();
-    out.setup.insert(out.setup.end(), setup.begin(), setup.end());
-    out.volume_of.insert(out.volume_of.end(), setup.size(), uint32_t(m));
+    // One volume per part, each keeping the caster's drawing order (a counting sort by part).
+    first_of_part.assign(size_t(parts) + 1, 0);
+    for (const uint32_t s : sources) ++first_of_part[part_of_polygon[s] + 1];
+    std::partial_sum(first_of_part.begin(), first_of_part.end(), first_of_part.begin());
+    const size_t base = out.setup.size();
+    const uint32_t first_volume = uint32_t(out.caster_of.size());
+    out.setup.resize(base + setup.size());
+    out.volume_of.resize(base + setup.size());
+    for (size_t i = 0; i < setup.size(); ++i) {
+      const uint32_t part = part_of_polygon[sources[i]];
+      const size_t at = base + first_of_part[part]++;
+      out.setup[at] = setup[i];
+      out.volume_of[at] = first_volume + part;
+    }
+    out.caster_of.insert(out.caster_of.end(), parts, uint32_t(m));
   }
   return out;
 }

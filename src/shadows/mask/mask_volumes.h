@@ -1,9 +1,13 @@
 #pragma once
-// The shadow volume polygons the masks draw, caster by caster: the very quads and caps of the
-// hard volumes (`volume`, shadow_stencil.cpp; caster_volume.h), set up for the rasterizer, with
-// the caster each came from. The mask's blends do not commute the way the stencil's additions
-// do, so the paper draws one volume at a time, front faces first (section 4.2): the rasterizer
-// needs to know where one volume ends.
+// The shadow volume polygons the masks draw: the very quads and caps of the hard volumes
+// (`volume`, shadow_stencil.cpp; caster_volume.h), set up for the rasterizer, one volume per
+// connected part of each caster. The mask's blends do not commute the way the stencil's
+// additions do, so the paper draws one volume at a time (section 4.2): the rasterizer needs to
+// know where one volume ends. Penumbra splits a caster into its connected parts (triangles
+// sharing vertices) because each part's volume is closed by itself and counts its own shadow
+// (>= 0 everywhere for a closed part), while the whole caster's volume is entered by an eye ray
+// once per part it passes: a grid of boxes or a multi-part model would need headroom the 8 bits
+// lack (docs/reproducing-hsv-and-masks.md).
 #include <cstdint>
 #include <vector>
 
@@ -18,8 +22,13 @@ namespace penumbra {
 
 struct MaskVolumes {
   std::vector<SetupTriangle> setup;  // volume after volume, each in the order `volume` draws it
-  std::vector<uint32_t> volume_of;   // per set-up triangle, its caster (scene mesh index)
+  std::vector<uint32_t> volume_of;   // per set-up triangle, its volume
+  std::vector<uint32_t> caster_of;   // per volume, its caster (scene mesh index)
 };
+
+// Per vertex of `mesh`, the connected part (0, 1, ...) of the triangles using it, in order of
+// first use by a triangle; unused vertices get part 0. Returns the number of parts.
+uint32_t connectedParts(const Mesh& mesh, std::vector<uint32_t>& part_of_vertex);
 
 // Counts silhouette_edges and triangles; adds the pass "silhouette".
 MaskVolumes maskVolumes(const Scene& scene, const vec3& centre, const View& view,

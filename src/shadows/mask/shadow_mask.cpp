@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <string>
 
 #include "core/parallel.h"
@@ -35,14 +36,17 @@ void MaskBuffer::set(int x, int y, uint32_t v) {
 namespace {
 
 // A bin tile of the mask in a contiguous copy of its own, as the stencil's (raster/tile_copy.h),
-// with the SIMD kernel's padding after it.
+// with the SIMD kernel's padding after it, and the tile's saturation flags (mask_kernel.h).
 struct MaskTile {
   alignas(64) uint8_t bytes[kBinTileSize * kBinTileSize * 4 + kMaskKernelPadding];
+  uint8_t saturated[kBinTileSize * kBinTileSize] = {};
 };
 
 struct MaskTileWork {
   KernelCounts kernel;
   CullTally tally;
+  uint64_t saturated_pixels = 0;
+  std::vector<uint32_t> saturated_volumes;  // in drawing order, each once
 };
 
 // One full-window rectangle: fn on every pixel's value, rows in parallel.
@@ -55,10 +59,76 @@ void rectanglePass(MaskBuffer& mask, Stats& stats, const std::string& name, Fn&&
   });
 }
 
+// Draws one volume polygon into a tile if it halves (or doubles, as `halves` says) the mask
+// there; returns the pixels whose halving lost a power of two.
+uint64_t drawPolygon(const SetupTriangle& t, bool halves, bool positive_doubles,
+                     const TileBox& box, const DepthBuffer& depth, const MaskTarget& target,
+                     bool simd, MaskTileWork& w) {
+  const bool zfail = (t.flags & kZFail) != 0;
+  const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
+  if (contribution == 0 || ((contribution > 0) == positive_doubles) == halves) return 0;
+  TileEdges e;
+  if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) return 0;
+  const MaskBlend blend{!halves, std::min(contribution > 0 ? contribution : -contribution,
+                                          int32_t(kMaskMaxSteps))};
+  const DepthRule rule = zfail ? DepthRule::NotCloser : DepthRule::Closer;
+  uint64_t lost = 0;
+  forEachCullRect(
+      t, e, depth, kBinTileLevel,
+      [&](const TileEdges& sub, float zmin, float zmax) {
+        return depthRuleTiles(t, sub, zfail, zmin, zmax, false) == DepthRuleTiles::None ? 0 : 1;
+      },
+      [&](const TileEdges& rect, int) {
+        lost += maskKernel(rect, blend, rule, target, w.kernel, simd);
+      },
+      w.tally);
+  return lost;
+}
+
+// The volumes overlapping one bin tile, one after the other. Section 4.2 draws each volume's
+// front faces first (with z-pass, the stencil-increasing ones), which is exact only while at
+// most two of them cover a pixel before a decreasing one: the doubling clamps at 1 and the later
+// halvings take the pixel to "lit". Penumbra draws each volume's halving polygons first, then
+// its doubling ones: with the three-pass normalisation a pixel starts at 1/4 and a closed
+// volume's count is >= 0, so the halvings have six powers of two below it (down to 1/255) and
+// the doublings can only clamp once the count is reached; with max-blend (start 1, the
+// increasing polygons halve) the same order has eight. Halvings past that are flagged per pixel.
+void drawTileVolumes(const MaskVolumes& volumes, const uint32_t* first, const uint32_t* last,
+                     const TileBox& box, const DepthBuffer& depth, const MaskTarget& target,
+                     bool positive_doubles, bool simd, MaskTileWork& w) {
+  for (const uint32_t* run = first; run != last;) {
+    const uint32_t volume = volumes.volume_of[*run];
+    const uint32_t* end = run;
+    while (end != last && volumes.volume_of[*end] == volume) ++end;
+    uint64_t lost = 0;
+    for (const bool halves : {true, false})
+      for (const uint32_t* k = run; k != end; ++k)
+        lost += drawPolygon(volumes.setup[*k], halves, positive_doubles, box, depth, target, simd, w);
+    if (lost != 0) w.saturated_volumes.push_back(volume);
+    run = end;
+  }
+  for (int y = box.y0; y <= box.y1; ++y)
+    for (int x = box.x0; x <= box.x1; ++x)
+      w.saturated_pixels += target.saturated[(y - box.y0) * target.stride + (x - box.x0)];
+}
+
+// The casters named once each, in scene order, whose volumes lost a halving in some tile.
+std::vector<uint32_t> saturatedCasters(const MaskVolumes& volumes,
+                                       const std::vector<MaskTileWork>& work) {
+  std::vector<bool> seen(volumes.caster_of.empty() ? 0 : volumes.caster_of.back() + 1, false);
+  for (const MaskTileWork& w : work)
+    for (const uint32_t v : w.saturated_volumes) seen[volumes.caster_of[v]] = true;
+  std::vector<uint32_t> out;
+  for (uint32_t c = 0; c < seen.size(); ++c)
+    if (seen[c]) out.push_back(c);
+  return out;
+}
+
 }  // namespace
 
 MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
-                      const EyeBuffers& eye, const ShadowMaskOptions& options, Stats& stats) {
+                      const EyeBuffers& eye, const ShadowMaskOptions& options, Stats& stats,
+                      MaskSaturation* saturation) {
   const DepthBuffer& depth = eye.depth;
   const int width = depth.width(), height = depth.height();
   PENUMBRA_CHECK(width == view.width && height == view.height,
@@ -81,57 +151,33 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
       const TileBox box{tx * kBinTileSize, ty * kBinTileSize,
                         std::min(width, (tx + 1) * kBinTileSize) - 1,
                         std::min(height, (ty + 1) * kBinTileSize) - 1};
-      MaskTileWork& w = work[tile];
       TileCopy<float> tile_depth(depth.depth, box);
-      MaskTile tile_mask;
+      auto tile_mask = std::make_unique<MaskTile>();
       for (int y = box.y0; y <= box.y1; ++y)
-        std::memcpy(tile_mask.bytes + size_t(y - box.y0) * kBinTileSize * bytes,
+        std::memcpy(tile_mask->bytes + size_t(y - box.y0) * kBinTileSize * bytes,
                     mask.pixel(box.x0, y), size_t(box.x1 - box.x0 + 1) * bytes);
-      const MaskTarget target{tile_depth.data(), tile_mask.bytes, kBinTileSize, box.x0, box.y0,
-                              options.layout};
-      // One volume at a time: first its polygons that add to the stencil (front faces with
-      // z-pass, back faces with z-fail), then those that subtract (section 4.2: "the front
-      // faces are drawn first").
-      const auto draw = [&](const SetupTriangle& t, bool positive) {
-        const bool zfail = (t.flags & kZFail) != 0;
-        const int32_t contribution = t.payload * t.facing * (zfail ? -1 : 1);
-        if (contribution == 0 || (contribution > 0) != positive) return;
-        TileEdges e;
-        if (!setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) return;
-        const MaskBlend blend{positive == positive_doubles,
-                              std::min(contribution > 0 ? contribution : -contribution,
-                                       int32_t(kMaskMaxSteps))};
-        const DepthRule rule = zfail ? DepthRule::NotCloser : DepthRule::Closer;
-        forEachCullRect(
-            t, e, depth, kBinTileLevel,
-            [&](const TileEdges& sub, float zmin, float zmax) {
-              return depthRuleTiles(t, sub, zfail, zmin, zmax, false) == DepthRuleTiles::None
-                         ? 0
-                         : 1;
-            },
-            [&](const TileEdges& rect, int) {
-              maskKernel(rect, blend, rule, target, w.kernel, options.simd);
-            },
-            w.tally);
-      };
-      for (const uint32_t* run = first; run != last;) {
-        const uint32_t volume = volumes.volume_of[*run];
-        const uint32_t* end = run;
-        while (end != last && volumes.volume_of[*end] == volume) ++end;
-        for (const bool positive : {true, false})
-          for (const uint32_t* k = run; k != end; ++k) draw(volumes.setup[*k], positive);
-        run = end;
-      }
+      MaskTarget target{tile_depth.data(), tile_mask->bytes, kBinTileSize, box.x0, box.y0,
+                        options.layout};
+      target.saturated = tile_mask->saturated;
+      drawTileVolumes(volumes, first, last, box, depth, target, positive_doubles, options.simd,
+                      work[tile]);
       for (int y = box.y0; y <= box.y1; ++y)
-        std::memcpy(mask.pixel(box.x0, y), tile_mask.bytes + size_t(y - box.y0) * kBinTileSize * bytes,
+        std::memcpy(mask.pixel(box.x0, y), tile_mask->bytes + size_t(y - box.y0) * kBinTileSize * bytes,
                     size_t(box.x1 - box.x0 + 1) * bytes);
     });
+    uint64_t saturated_pixels = 0;
     for (const MaskTileWork& w : work) {
       stats.pixels_rasterized += w.kernel.covered;
       stats.z_reads += w.kernel.covered;
       stats.stencil_writes += w.kernel.writes;
       stats.tiles_tested += w.tally.tested;
       stats.tiles_culled += w.tally.culled;
+      saturated_pixels += w.saturated_pixels;
+    }
+    stats.count(kMaskSaturatedPixels, saturated_pixels);
+    if (saturation) {
+      saturation->pixels = saturated_pixels;
+      saturation->casters = saturatedCasters(volumes, work);
     }
   }
   if (!options.normalise) return mask;

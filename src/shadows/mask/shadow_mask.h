@@ -9,6 +9,7 @@
 #include "core/view.h"
 #include "raster/depth_buffer.h"
 #include "scene/scene.h"
+#include "shadows/mask/mask_counters.h"
 #include "shadows/mask/mask_kernel.h"
 #include "shadows/mask/mask_values.h"
 
@@ -47,10 +48,18 @@ struct ShadowMaskOptions {
   bool normalise = true;  // false: the raw mask after the volumes (tests of section 4.2's states)
 };
 
+// Where the 8 bits were not enough: the pixels a halving took below 1/255 (their value, and so
+// possibly their lit/shadowed state, is not the stencil's) and the casters whose volumes did it.
+struct MaskSaturation {
+  uint64_t pixels = 0;
+  std::vector<uint32_t> casters;  // scene mesh indices, ascending
+};
+
 // Adds the passes "silhouette", "mask volumes" and one per normalisation rectangle, and the
 // counters silhouette_edges, triangles, pixels_rasterized, z_reads, stencil_writes (mask
-// writes), tiles_tested and tiles_culled.
+// writes), tiles_tested, tiles_culled and mask_saturated_pixels; fills `saturation` if given.
 MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
-                      const EyeBuffers& eye, const ShadowMaskOptions& options, Stats& stats);
+                      const EyeBuffers& eye, const ShadowMaskOptions& options, Stats& stats,
+                      MaskSaturation* saturation = nullptr);
 
 }  // namespace penumbra
