@@ -60,6 +60,7 @@ struct ExactScratch {
   std::vector<FloatBlock> x, y;
   std::vector<IntBlock> count;
   std::vector<uint8_t> into;
+  std::vector<uint8_t> lit, lit_in_order;  // per sample, sorted and in the oracle's order
   std::vector<ConeSample> cone_samples;  // a pixel's samples, for the triangles cutting the light
   PixelBlock block;
   PixelBasis frames[kBlockPixels];
@@ -72,7 +73,8 @@ struct ExactScratch {
   EdgeLanes edge_lanes;
   explicit ExactScratch(const SortedSamples& s)
       : x(s.padded / kSampleBlock), y(s.padded / kSampleBlock), count(s.padded / kSampleBlock),
-        into(size_t(s.n)), cone_samples(size_t(s.n)) {}
+        into(size_t(s.n)), lit(size_t(s.n)), lit_in_order(size_t(s.n)),
+        cone_samples(size_t(s.n)) {}
 };
 
 struct ExactTileWork {
@@ -81,6 +83,30 @@ struct ExactTileWork {
   uint64_t exact = 0;   // of those, pairs tested exactly
   uint64_t inside = 0;  // of those, edges that changed samples
 };
+
+// The light's samples as the oracle traces them toward a disk or rectangle light: fixed points
+// of its area (planarLightPoint), in the sorted order, and for a textured light what each one
+// emits (light.h). Empty `points` for a sphere, whose samples follow each point's cone.
+struct PlanarSamples {
+  std::vector<dvec3> points;
+  std::vector<vec3> texels;  // textured lights only, in the oracle's sample order
+  dvec3 texel_sum{0.0};      // summed in that order, as the oracle does
+};
+
+PlanarSamples planarSamples(const Light& light, const SortedSamples& samples) {
+  PlanarSamples planar;
+  if (light.shape == LightShape::Sphere) return planar;
+  for (const vec2& u : samples.square) planar.points.push_back(planarLightPoint(light, u));
+  if (light.texture != nullptr) {
+    planar.texels.resize(size_t(samples.n));
+    for (int i = 0; i < samples.n; ++i) {
+      const vec3 texel = light.texture->at(samples.square[size_t(i)]);
+      planar.texels[samples.order[size_t(i)]] = texel;
+    }
+    for (const vec3& t : planar.texels) planar.texel_sum += dvec3(t);
+  }
+  return planar;
+}
 
 class ExactSoftShadows final : public PreparedTechnique {
  public:
@@ -95,7 +121,20 @@ class ExactSoftShadows final : public PreparedTechnique {
  private:
   float finishPixel(const PixelBasis& f, const std::vector<PixelEdge>& edges,
                     const std::vector<const CuttingTriangle*>& cutting, const Light& light,
-                    bool simd, ExactScratch& scratch) const;
+                    const PlanarSamples& planar, bool simd, ExactScratch& scratch,
+                    vec3& rgb) const;
+  int samplesIntoSurface(const PixelBasis& f, const Light& light, const PlanarSamples& planar,
+                         ExactScratch& scratch) const;
+  void addEdgeSums(const PixelBasis& f, const std::vector<PixelEdge>& edges,
+                   const PlanarSamples& planar, bool simd, int32_t* count,
+                   ExactScratch& scratch) const;
+  void addCuttingTriangles(const PixelBasis& f, const std::vector<const CuttingTriangle*>& cutting,
+                           const PlanarSamples& planar, int32_t* count,
+                           ExactScratch& scratch) const;
+  // The visibility of the samples marked lit in scratch.lit.
+  float tally(const PlanarSamples& planar, ExactScratch& scratch, vec3& rgb) const;
+  float insideLightPixel(const PixelBasis& f, const PlanarSamples& planar,
+                         ExactScratch& scratch, vec3& rgb) const;
 
   ExactOptions options_;
   const Scene& scene_;
@@ -105,60 +144,84 @@ class ExactSoftShadows final : public PreparedTechnique {
   EdgeGeometry geometry_;  // the potential edges' light-independent half
 };
 
-float ExactSoftShadows::finishPixel(const PixelBasis& f, const std::vector<PixelEdge>& edges,
-                                    const std::vector<const CuttingTriangle*>& cutting,
-                                    const Light& light, bool simd, ExactScratch& scratch) const {
-  // The count at the centre is a number of triangles crossed, never below 0: a negative
-  // stencil, or the visible triangle taken out of a stencil that did not count it (its own
-  // quads rasterized past a pixel whose depth-buffer point lies just off it), is rounding of
-  // the raster passes, and the count is 0 there.
-  if (!f.ready) return f.stencil <= 0 ? 1.0f : 0.0f;  // clear of the light, and no edge
-  const int32_t centre_count = std::max(f.centre_count, 0);
-  // No sample's count can come down to 0 (the edges move it by at most `reach`, cutting
-  // triangles only add): every sample is blocked, whichever side of the visible triangle's
-  // plane it lies on, so the umbra skips the test below.
-  if (centre_count > f.reach) return 0.0f;
-  const dvec3 c(light.center);
-  const double r = light.radius;
-  const int n = samples_.n;
-  // Samples behind the visible triangle's plane are blocked by it; only where the light
-  // reaches across that plane does any sample need the test (the oracle's, sample by sample);
-  // the margin is FacingAway's, which lets pixels no edge reaches skip all of this.
-  int into_count = 0;
-  bool any_into = false;
-  const double normal_length = glm::length(f.start.plane_normal);
-  if (normal_length > 0.0 &&
-      glm::dot(f.start.plane_normal, c - f.start.plane_point) / normal_length <=
-          r * (1.0 + FacingAway::kClearMargin)) {
-    any_into = true;
-    for (int i = 0; i < n; ++i) {
-      const ConeSample s = sampleSphereCone(f.cone, samples_.disk[size_t(i)]);
-      const bool into =
-          f.start.intoSurface(f.start.origin + dvec3(s.direction) * double(s.distance));
-      scratch.into[size_t(i)] = into;
-      into_count += into;
-    }
-  }
-  // No edge and no cutting triangle: reach 0, and centre_count 0 by the test above.
-  if (edges.empty() && cutting.empty()) return float(n - into_count) / float(n);
+// Where sample i lies in the world: on the cone's cap of a sphere light, or the planar light's
+// fixed point.
+dvec3 samplePoint(const PixelBasis& f, const SortedSamples& samples, const PlanarSamples& planar,
+                  int i) {
+  if (!planar.points.empty()) return planar.points[size_t(i)];
+  const ConeSample s = sampleSphereCone(f.cone, samples.disk[size_t(i)]);
+  return f.start.origin + dvec3(s.direction) * double(s.distance);
+}
 
-  // Sample positions on the plane at unit distance (sampleSphereCone's angles, in float).
+// Samples behind the visible triangle's plane are blocked by it (scratch.into); only where the
+// light reaches across that plane does any sample need the test (the oracle's, sample by
+// sample); the margin is FacingAway's, which lets pixels no edge reaches skip all of this.
+// Returns how many are blocked so, or -1 when the plane leaves the whole light in front.
+int ExactSoftShadows::samplesIntoSurface(const PixelBasis& f, const Light& light,
+                                         const PlanarSamples& planar,
+                                         ExactScratch& scratch) const {
+  const double normal_length = glm::length(f.start.plane_normal);
+  const double r = light.radius;
+  if (!(normal_length > 0.0 &&
+        glm::dot(f.start.plane_normal, dvec3(light.center) - f.start.plane_point) / normal_length <=
+            r * (1.0 + FacingAway::kClearMargin)))
+    return -1;
+  int into_count = 0;
+  for (int i = 0; i < samples_.n; ++i) {
+    scratch.into[size_t(i)] = f.start.intoSurface(samplePoint(f, samples_, planar, i));
+    into_count += scratch.into[size_t(i)];
+  }
+  return into_count;
+}
+
+// The edges' sums (Laine et al. 2005, section 3): each edge adds its delta to the samples its
+// projection separates from the centre, on the plane at unit distance.
+void ExactSoftShadows::addEdgeSums(const PixelBasis& f, const std::vector<PixelEdge>& edges,
+                                   const PlanarSamples& planar, bool simd, int32_t* count,
+                                   ExactScratch& scratch) const {
+  // Sample positions on the plane at unit distance: sampleSphereCone's angles in float, or the
+  // planar light's points projected from the point.
+  const int n = samples_.n;
   float* sx = scratch.x.data()->v;
   float* sy = scratch.y.data()->v;
-  int32_t* count = scratch.count.data()->v;
-  samplePositions(samples_.radius2.data(), samples_.cos_phi.data(), samples_.sin_phi.data(),
-                  f.cone.one_minus_cos_max, sx, sy, samples_.padded, simd);
-  std::fill(count, count + samples_.padded, centre_count);
+  const bool is_planar = !planar.points.empty();
+  if (is_planar) {
+    for (int i = 0; i < n; ++i) {
+      const dvec3 v = planar.points[size_t(i)] - f.p;
+      const double z = glm::dot(v, f.axis);
+      sx[i] = float(glm::dot(v, f.tangent) / z);
+      sy[i] = float(glm::dot(v, f.bitangent) / z);
+    }
+    // Padding at the centre, on its side of every edge: never counted.
+    std::fill(sx + n, sx + samples_.padded, 0.0f);
+    std::fill(sy + n, sy + samples_.padded, 0.0f);
+  } else {
+    samplePositions(samples_.radius2.data(), samples_.cos_phi.data(), samples_.sin_phi.data(),
+                    f.cone.one_minus_cos_max, sx, sy, samples_.padded, simd);
+  }
   for (const PixelEdge& e : edges) {
+    // A planar light's samples keep no angle around the centre: every block is visited.
+    if (is_planar) {
+      addEdgeCrossings(e.edge, sx, sy, count, samples_.padded, simd);
+      continue;
+    }
     for (int k = 0; k < 2; ++k) {
       const uint32_t b = e.runs.begin[k];
       if (e.runs.end[k] > b)
         addEdgeCrossings(e.edge, sx + b, sy + b, count + b, e.runs.end[k] - b, simd);
     }
   }
-  // Triangles cutting the light, against each sample's segment as the oracle traces it: the
-  // samples of the blocks the triangle's angular extent can reach and not blocked already.
-  if (!cutting.empty()) {
+}
+
+// Triangles cutting the light, against each sample's segment as the oracle traces it: the
+// samples of the blocks the triangle's angular extent can reach and not blocked already.
+void ExactSoftShadows::addCuttingTriangles(const PixelBasis& f,
+                                           const std::vector<const CuttingTriangle*>& cutting,
+                                           const PlanarSamples& planar, int32_t* count,
+                                           ExactScratch& scratch) const {
+  const int n = samples_.n;
+  const bool is_planar = !planar.points.empty();
+  if (!is_planar) {
     for (int i = 0; i < n; ++i)
       scratch.cone_samples[size_t(i)] = sampleSphereCone(f.cone, samples_.disk[size_t(i)]);
   }
@@ -167,25 +230,110 @@ float ExactSoftShadows::finishPixel(const PixelBasis& f, const std::vector<Pixel
     for (int k = 0; k < 2; ++k) {
       for (uint32_t i = runs.begin[k]; i < std::min(runs.end[k], uint32_t(n)); ++i) {
         if (count[i] != 0) continue;
+        if (is_planar) {
+          if (segmentHitsTriangle(f.p, planar.points[i] - f.p, 1.0 - kTfarShrink, *t))
+            count[i] = 1;
+          continue;
+        }
         const ConeSample& s = scratch.cone_samples[i];
         const double t_max = double(s.distance) * (1.0 - kTfarShrink);
         if (segmentHitsTriangle(f.p, dvec3(s.direction), t_max, *t)) count[i] = 1;
       }
     }
   }
-  int lit = 0;
+}
+
+float ExactSoftShadows::finishPixel(const PixelBasis& f, const std::vector<PixelEdge>& edges,
+                                    const std::vector<const CuttingTriangle*>& cutting,
+                                    const Light& light, const PlanarSamples& planar, bool simd,
+                                    ExactScratch& scratch, vec3& rgb) const {
+  // The count at the centre is a number of triangles crossed, never below 0: a negative
+  // stencil, or the visible triangle taken out of a stencil that did not count it (its own
+  // quads rasterized past a pixel whose depth-buffer point lies just off it), is rounding of
+  // the raster passes, and the count is 0 there.
+  if (!f.ready) {  // clear of the light, and no edge
+    const float v = f.stencil <= 0 ? 1.0f : 0.0f;
+    rgb = vec3(v);
+    return v;
+  }
+  const int32_t centre_count = std::max(f.centre_count, 0);
+  // No sample's count can come down to 0 (the edges move it by at most `reach`, cutting
+  // triangles only add): every sample is blocked, whichever side of the visible triangle's
+  // plane it lies on, so the umbra skips the test below.
+  if (centre_count > f.reach) {
+    rgb = vec3(0.0f);
+    return 0.0f;
+  }
+  const int n = samples_.n;
+  const int into_count = samplesIntoSurface(f, light, planar, scratch);
+  const bool any_into = into_count >= 0;
+  // No edge and no cutting triangle: reach 0, and centre_count 0 by the test above.
+  if (edges.empty() && cutting.empty() && planar.texels.empty()) {
+    const float v = float(n - std::max(into_count, 0)) / float(n);
+    rgb = vec3(v);
+    return v;
+  }
+  int32_t* count = scratch.count.data()->v;
+  std::fill(count, count + samples_.padded, centre_count);
+  if (!edges.empty() || !cutting.empty()) addEdgeSums(f, edges, planar, simd, count, scratch);
+  if (!cutting.empty()) addCuttingTriangles(f, cutting, planar, count, scratch);
   for (int i = 0; i < n; ++i)
-    lit += count[i] == 0 && !(any_into && scratch.into[size_t(i)]);
-  return float(lit) / float(n);
+    scratch.lit[size_t(i)] = count[i] == 0 && !(any_into && scratch.into[size_t(i)]);
+  return tally(planar, scratch, rgb);
+}
+
+float ExactSoftShadows::tally(const PlanarSamples& planar, ExactScratch& scratch,
+                              vec3& rgb) const {
+  const int n = samples_.n;
+  int lit = 0;
+  for (int i = 0; i < n; ++i) lit += scratch.lit[size_t(i)];
+  const float grey = float(lit) / float(n);
+  rgb = vec3(grey);
+  if (!planar.texels.empty()) {
+    // The oracle's per-channel weighting, summed in its sample order (reference_technique.cpp).
+    for (int i = 0; i < n; ++i)
+      scratch.lit_in_order[samples_.order[size_t(i)]] = scratch.lit[size_t(i)];
+    dvec3 seen(0.0);
+    for (int k = 0; k < n; ++k)
+      if (scratch.lit_in_order[size_t(k)]) seen += dvec3(planar.texels[size_t(k)]);
+    for (int ch = 0; ch < 3; ++ch)
+      rgb[ch] = planar.texel_sum[ch] > 0.0 ? float(seen[ch] / planar.texel_sum[ch]) : 1.0f;
+  }
+  return grey;
+}
+
+float ExactSoftShadows::insideLightPixel(const PixelBasis& f, const PlanarSamples& planar,
+                                         ExactScratch& scratch, vec3& rgb) const {
+  // A point inside a planar light's bounding ball: no cone toward the light, so every sample's
+  // segment is tested against every triangle but the visible one, as the oracle traces it.
+  // Rare (a receiver closer to the light's centre than its radius) and slow.
+  const int n = samples_.n;
+  const dvec3 p(vec3(f.start.origin));  // the oracle's float origin
+  for (int i = 0; i < n; ++i) {
+    const dvec3& target = planar.points[size_t(i)];
+    bool lit = glm::length(target - f.start.origin) > 0.0 && !f.start.intoSurface(target);
+    uint32_t id = 0;
+    for (const Mesh& mesh : scene_.meshes) {
+      const size_t triangles = mesh.triangleCount();
+      for (size_t t = 0; t < triangles && lit; ++t) {
+        if (id + t == f.primitive) continue;
+        lit = !segmentHitsTriangle(p, target - p, 1.0 - kTfarShrink, dvec3(mesh.vertex(t, 0)),
+                                   dvec3(mesh.vertex(t, 1)), dvec3(mesh.vertex(t, 2)));
+      }
+      id += uint32_t(triangles);
+    }
+    scratch.lit[size_t(i)] = lit;
+  }
+  return tally(planar, scratch, rgb);
 }
 
 TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
                                          const EyeBuffers& eye,
                                          const RenderContext& context) const {
-  requireSphereLight(light, "exact");
   PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
   PENUMBRA_CHECK(std::isfinite(light.radius) && light.radius >= 0.0f,
                  "light radius {} must be a finite number >= 0", light.radius);
+  checkLightShape(light);
   const int width = eye.depth.width(), height = eye.depth.height();
   PENUMBRA_CHECK(width == view.width && height == view.height,
                  "eye buffers are {}x{} but the view is {}x{}", width, height, view.width,
@@ -233,6 +381,20 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   stats.time_ms.emplace_back("overlap", std::min(0.0, wall - passes));
 
   Image<float> soft(width, height, 1.0f);
+  // Disk and rectangle lights: the fixed points of their area; a textured one's visibility
+  // per channel beside the grey one (setChannelVisibility).
+  const PlanarSamples planar = planarSamples(light, samples_);
+  const bool textured = !planar.texels.empty();
+  ChannelVisibility soft_rgb;
+  if (textured) {
+    for (Image<float>& channel : soft_rgb) channel.resize(width, height, 1.0f);
+  }
+  const auto store = [&](int x, int y, float grey, const vec3& rgb) {
+    soft.at(x, y) = grey;
+    if (textured) {
+      for (int ch = 0; ch < 3; ++ch) soft_rgb[size_t(ch)].at(x, y) = rgb[ch];
+    }
+  };
   // Which visible triangles face away from the light: decided once per triangle, for the
   // samples and the resolve.
   const FacingAway away(scene_, light, view);
@@ -337,7 +499,9 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
           if (!away.clearOfLight(id)) {
             float known = 0.0f;
             if (!setUp(i, known)) {
-              soft.at(x, y) = known;
+              vec3 rgb(known);
+              if (f.inside_light) known = insideLightPixel(f, planar, scratch, rgb);
+              store(x, y, known, rgb);
               continue;
             }
           }
@@ -457,9 +621,11 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         }
         for (uint64_t active = block.active; active != 0; active &= active - 1) {
           const int i = __builtin_ctzll(active);
-          soft.at(scratch.px[i], scratch.py[i]) =
-              finishPixel(scratch.frames[i], scratch.edges[i], scratch.cutting[i], light,
-                          context.simd, scratch);
+          vec3 rgb;
+          const float grey = finishPixel(scratch.frames[i], scratch.edges[i],
+                                         scratch.cutting[i], light, planar, context.simd,
+                                         scratch, rgb);
+          store(scratch.px[i], scratch.py[i], grey, rgb);
         }
       }
       progress.add();
@@ -474,6 +640,14 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   {
     PassTimer timer(stats, "resolve");
     resolveVisibility(away, eye, result.visibility, [&](int x, int y) { return soft.at(x, y); });
+    if (textured) {
+      ChannelVisibility channels;
+      for (size_t ch = 0; ch < 3; ++ch) {
+        resolveVisibility(away, eye, channels[ch],
+                          [&](int x, int y) { return soft_rgb[ch].at(x, y); });
+      }
+      setChannelVisibility(result, light, std::move(channels));
+    }
   }
   return result;
 }
