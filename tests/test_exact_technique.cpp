@@ -605,6 +605,26 @@ TEST(ExactTechnique, MatchesTheOracleOnTexturedLightsPerChannel) {
   EXPECT_GT(coloured, 50u);
 }
 
+// 5c. The potential edges are kept across frames while the light stays where it is
+// (ExactSoftShadows::cachedPotentialEdges). One prepared technique renders a light, the light
+// moved, and the first light again; each image must equal a freshly prepared technique's. If
+// this failed, a frame would be counted with another light's potential edges.
+TEST(ExactTechnique, PotentialEdgesKeptAcrossFramesFollowTheLight) {
+  const Frame f = makeFrame(builtinScene("spheres"), 160, 107);
+  Light moved = f.scene.lights.at(0);
+  moved.center += vec3(0.7f, -0.3f, 0.4f);
+  const std::unique_ptr<PreparedTechnique> kept = prepareTechnique(exactConfig(64), f.scene);
+  for (const Light& light : {f.scene.lights[0], moved, f.scene.lights[0]}) {
+    const Image<float> fresh =
+        prepareTechnique(exactConfig(64), f.scene)->render(light, f.view, f.eye, {}).visibility;
+    const Image<float> again = kept->render(light, f.view, f.eye, {}).visibility;
+    ASSERT_EQ(fresh.size(), again.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < fresh.size(); ++i) differing += fresh[i] != again[i];
+    EXPECT_EQ(differing, 0u) << "light at " << light.center.x << ", " << light.center.y;
+  }
+}
+
 // 6. The SIMD sample kernel and its scalar twin must add the same deltas to the same samples
 // (sample_kernel.h: same float operations in the same order, no FMA): random edges over random
 // samples, with samples exactly on the sector lines and on the edge's line (lines through

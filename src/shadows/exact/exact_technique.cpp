@@ -28,6 +28,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include <fmt/format.h>
@@ -170,8 +171,8 @@ class ExactSoftShadows final : public PreparedTechnique {
   // and block of pixels the set-up, the edges' and cutting triangles' tests and the count.
   void stencilAndEdges(const Light& light, const View& view, const EyeBuffers& eye,
                        const RenderContext& context, StencilQuads& quads,
-                       Image<int32_t>& stencil, PotentialEdges& edges, EdgeBins& bins,
-                       Stats& stats) const;
+                       Image<int32_t>& stencil, std::shared_ptr<const PotentialEdges>& edges,
+                       EdgeBins& bins, Stats& stats) const;
   void shadeTiles(const LightPass& pass, Stats& stats) const;
   void shadeTile(const LightPass& pass, size_t index, ExactScratch& scratch,
                  ExactTileWork& work) const;
@@ -190,6 +191,21 @@ class ExactSoftShadows final : public PreparedTechnique {
   float tally(const PlanarSamples& planar, ExactScratch& scratch, vec3& rgb) const;
   float insideLightPixel(const PixelBasis& f, const PlanarSamples& planar,
                          ExactScratch& scratch, vec3& rgb) const;
+
+  // The potential edges of a light at `centre` and `radius` (potentialEdges: they depend on
+  // nothing else), kept while the light does not move: a warm frame under a still light skips
+  // them. Up to kEdgeCacheLights lights, the least recently used replaced.
+  std::shared_ptr<const PotentialEdges> cachedPotentialEdges(const Light& light) const;
+  struct EdgeCacheEntry {
+    vec3 centre{0.0f};
+    float radius = 0.0f;
+    uint64_t used = 0;
+    std::shared_ptr<const PotentialEdges> edges;
+  };
+  static constexpr size_t kEdgeCacheLights = 8;
+  mutable std::mutex edge_cache_mutex_;
+  mutable std::vector<EdgeCacheEntry> edge_cache_;
+  mutable uint64_t edge_cache_clock_ = 0;
 
   ExactOptions options_;
   const Scene& scene_;
@@ -387,9 +403,36 @@ float ExactSoftShadows::insideLightPixel(const PixelBasis& f, const PlanarSample
 // counters and timings kept apart, then added). Their passes overlap in time, so a pass
 // "overlap" (<= 0 ms) takes back what their sum exceeds the wall-clock time by, and the light's
 // total stays the time it took.
+std::shared_ptr<const PotentialEdges> ExactSoftShadows::cachedPotentialEdges(
+    const Light& light) const {
+  {
+    const std::lock_guard<std::mutex> lock(edge_cache_mutex_);
+    for (EdgeCacheEntry& entry : edge_cache_) {
+      // Bit-equal floats: the same light, the same edges.
+      if (entry.centre == light.center && entry.radius == light.radius) {
+        entry.used = ++edge_cache_clock_;
+        return entry.edges;
+      }
+    }
+  }
+  auto edges = std::make_shared<const PotentialEdges>(potentialEdges(scene_, geometry_, light));
+  const std::lock_guard<std::mutex> lock(edge_cache_mutex_);
+  EdgeCacheEntry entry{light.center, light.radius, ++edge_cache_clock_, edges};
+  if (edge_cache_.size() < kEdgeCacheLights) {
+    edge_cache_.push_back(std::move(entry));
+  } else {
+    *std::min_element(edge_cache_.begin(), edge_cache_.end(),
+                      [](const EdgeCacheEntry& a, const EdgeCacheEntry& b) {
+                        return a.used < b.used;
+                      }) = std::move(entry);
+  }
+  return edges;
+}
+
 void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, const EyeBuffers& eye,
                                        const RenderContext& context, StencilQuads& quads,
-                                       Image<int32_t>& stencil, PotentialEdges& edges,
+                                       Image<int32_t>& stencil,
+                                       std::shared_ptr<const PotentialEdges>& edges,
                                        EdgeBins& bins, Stats& stats) const {
   ShadowStencilOptions stencil_options;
   stencil_options.simd = context.simd;
@@ -405,11 +448,11 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
       [&] {
         {
           PassTimer timer(edge_stats, "edges");
-          edges = potentialEdges(scene_, geometry_, light);
-          edge_stats.wedges += edges.edges.size();
+          edges = cachedPotentialEdges(light);
+          edge_stats.wedges += edges->edges.size();
         }
         PassTimer timer(edge_stats, "binning");
-        bins = binEdges(edges, light, view, eye.depth, options_.tile_level,
+        bins = binEdges(*edges, light, view, eye.depth, options_.tile_level,
                         kMaxOriginOffsetFootprints, bounds_, context.simd);
         edge_stats.tiles_tested += bins.tiles_tested;
         edge_stats.tiles_culled += bins.tiles_culled;
@@ -708,7 +751,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   Stats& stats = result.stats;
   StencilQuads quads;
   Image<int32_t> stencil;
-  PotentialEdges edges;
+  std::shared_ptr<const PotentialEdges> edges;
   EdgeBins bins;
   stencilAndEdges(light, view, eye, context, quads, stencil, edges, bins, stats);
 
@@ -733,7 +776,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
         -glm::normalize(dvec3(view.view[0][2], view.view[1][2], view.view[2][2])),
         double(view.near_plane),
         std::any_of(quads.zfail.begin(), quads.zfail.end(), [](uint8_t z) { return z != 0; })};
-    const LightPass pass{light, view, eye, context, stencil, edges, bins, quads, away, origins,
+    const LightPass pass{light, view, eye, context, stencil, *edges, bins, quads, away, origins,
                          planar, replay, light_centre, eye_position,
                          dmat4(view.view_projection),
                          2.0 / (double(view.projection[1][1]) * view.height), soft, soft_rgb};
