@@ -8,7 +8,7 @@ out="${2:-docs/images/wedge-accuracy}"
 mkdir -p "$out"
 for scene in spheres columns scenes/bunny-lowres.json tests/data/scenes/stanford-bunny.json; do
   name="$(basename "$scene" .json)"
-  "$build/penumbra" render "$scene" --width 640 --height 427 --quiet \
+  "$build/penumbra" render "$scene" --width 640 --height 427 --quiet --technique wedge-3pass \
     --visibility "$out/$name-wedge.exr" --visibility-png "$out/$name-wedge.png" -o "$out/shaded.png"
   "$build/penumbra" render "$scene" --width 640 --height 427 --quiet --technique reference \
     --rays 1024 --visibility "$out/$name-oracle.exr" --visibility-png "$out/$name-oracle.png" \

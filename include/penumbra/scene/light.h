@@ -9,8 +9,8 @@ namespace penumbra {
 
 // What the light's area is. The penumbra-wedge papers and the exact soft shadow volumes use a
 // sphere; the 2003 soft shadow volumes (Assarsson and Akenine-Moller) use a rectangle, and
-// Funk's 2004 report a circle (`coverage` takes all three, as do `heckbert-herf` and the
-// oracle). Visibility is always the fraction of the light's area (a sphere: of the disk it
+// Funk's 2004 report a circle (`coverage` takes all three, as do `exact`, `heckbert-herf` and
+// the oracle). Visibility is always the fraction of the light's area (a sphere: of the disk it
 // shows the point) that the point sees, with no cosine weighting, as in the papers.
 enum class LightShape {
   Sphere,     // centre and radius; seen from a point, the disk its tangent cone cuts out
@@ -76,7 +76,7 @@ double lightArea(const Light& light);
 void checkLightShape(const Light& light);
 
 // Throws penumbra::Error "<technique> supports only spherical lights, not a <shape> light"
-// for a non-sphere light: the techniques built on a sphere (wedges, exact, shadow maps) call it
+// for a non-sphere light: the techniques built on a sphere (wedges, shadow maps) call it
 // where they render, rather than treat another shape as a sphere.
 void requireSphereLight(const Light& light, const std::string& technique);
 

@@ -103,7 +103,9 @@ const TechniqueInfo& findTechnique(const std::string& name);
 // Adds a technique; for tests and programs that bring their own. Call it before any frame is
 // rendered (static initialisation is fine); throws when the name is taken.
 void registerTechnique(TechniqueInfo info);
-inline constexpr const char* kDefaultTechnique = "wedge-3pass";
+// The default soft technique: exact soft shadow volumes, the oracle's answer for a fixed light
+// sample set on every light shape (README, "Why exact is the default").
+inline constexpr const char* kDefaultTechnique = "exact";
 
 // A technique and its options: what a frame is told to render with.
 class TechniqueConfig {

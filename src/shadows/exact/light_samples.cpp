@@ -12,10 +12,17 @@ SortedSamples makeSampleSet(int n, uint64_t seed) {
   set.padded = (size_t(n) + kSampleBlock - 1) / kSampleBlock * kSampleBlock;
   std::vector<vec2> square(static_cast<size_t>(n));
   fixedSamples(n, seed, square.data());
-  for (int i = 0; i < n; ++i) set.disk.push_back(concentricDisk(square[size_t(i)]));
+  std::vector<DiskPoint> disk;
+  for (int i = 0; i < n; ++i) disk.push_back(concentricDisk(square[size_t(i)]));
   auto angle = [](const DiskPoint& d) { return pseudoAngle(d.cos_phi, d.sin_phi); };
-  std::stable_sort(set.disk.begin(), set.disk.end(),
-                   [&](const DiskPoint& a, const DiskPoint& b) { return angle(a) < angle(b); });
+  for (int i = 0; i < n; ++i) set.order.push_back(uint32_t(i));
+  std::stable_sort(set.order.begin(), set.order.end(), [&](uint32_t a, uint32_t b) {
+    return angle(disk[a]) < angle(disk[b]);
+  });
+  for (const uint32_t i : set.order) {
+    set.disk.push_back(disk[i]);
+    set.square.push_back(square[i]);
+  }
   set.radius2.assign(set.padded, 0.0f);
   set.cos_phi.assign(set.padded, 1.0f);
   set.sin_phi.assign(set.padded, 0.0f);

@@ -18,6 +18,10 @@ struct SortedSamples {
   int n = 0;
   size_t padded = 0;
   std::vector<DiskPoint> disk;  // n entries
+  // The same samples as points of the unit square (disk and rectangle lights place them there,
+  // planarLightPoint) and each one's index in the set fixedSamples gives (the oracle's order).
+  std::vector<vec2> square;
+  std::vector<uint32_t> order;
   // Per block of kSampleBlock samples, the pseudo-angles of its first and last real sample.
   std::vector<double> block_first, block_last;
   std::vector<float> radius2, cos_phi, sin_phi;  // padded entries

@@ -49,17 +49,19 @@ bool mayBlockSamples(const CuttingTriangle& t, const PixelBasis& f, const Light&
     if (glm::dot(dvec3(plane), f.p) + plane.w < -margin) return false;
   }
   // Wholly deeper along the axis than the light centre: behind every point of the cap seen from
-  // p (whose depths are at most d - r^2 / d), so crossed only after the light.
-  const double light_centre_depth = f.light_near + light.radius;
+  // p (whose depths are at most d - r^2 / d), so crossed only after the light. A planar light's
+  // samples lie anywhere in its bounding ball, down to the ball's far depth d + r.
+  const double light_far_depth = f.light_near + light.radius * (f.planar ? 2.0 : 1.0);
   if (std::min({glm::dot(t.v[0] - f.p, f.axis), glm::dot(t.v[1] - f.p, f.axis),
-                glm::dot(t.v[2] - f.p, f.axis)}) > light_centre_depth * (1.0 + 1e-9))
+                glm::dot(t.v[2] - f.p, f.axis)}) > light_far_depth * (1.0 + 1e-9))
     return false;
   // The cap seen from p: sphere points q with (q - c) . u >= r^2 / d, u the unit vector from c
   // toward p; it lies in the ball around m = c + u r^2 / d of radius r sqrt(1 - r^2 / d^2).
+  // A planar light: the whole bounding ball.
   const dvec3 c(light.center);
   const double r = light.radius, d = glm::length(f.p - c);
-  const dvec3 m = c + (f.p - c) * (r * r / (d * d));
-  const double rho = r * std::sqrt(std::max(0.0, 1.0 - r * r / (d * d)));
+  const dvec3 m = f.planar ? c : c + (f.p - c) * (r * r / (d * d));
+  const double rho = f.planar ? r : r * std::sqrt(std::max(0.0, 1.0 - r * r / (d * d)));
   const dvec3 n(t.plane);
   const double at_p = glm::dot(n, f.p) + t.plane.w, at_m = glm::dot(n, m) + t.plane.w;
   const bool same_side = at_p > 0.0 ? at_m > rho + margin : at_m < -rho - margin;
@@ -70,6 +72,8 @@ SampleRuns triangleRuns(const CuttingTriangle& t, const PixelBasis& f,
                         const SortedSamples& samples) {
   SampleRuns all;
   all.end[0] = uint32_t(samples.padded);
+  // A planar light's samples have no fixed angle around the centre on the point's plane.
+  if (f.planar) return all;
   double angle[3];
   for (int k = 0; k < 3; ++k) {
     const dvec3 v = t.v[k] - f.p;
@@ -126,8 +130,12 @@ bool setupPixel(int x, int y, float depth, uint32_t primitive, int32_t stencil,
   f.ready = true;
   f.primitive = primitive;
   f.start = origins.start(x, y, depth, primitive, triangle);
-  // A point inside the light sees all of it (as the oracle has it).
+  f.planar = light.shape != LightShape::Sphere;
+  f.inside_light = false;
+  // A point inside a sphere light sees all of it (as the oracle has it); inside a planar
+  // light's bounding ball the oracle still traces its rays, and so does the caller.
   if (glm::length(c - f.start.origin) <= r) {
+    f.inside_light = f.planar;
     known = 1.0f;
     return false;
   }

@@ -24,6 +24,12 @@ struct PixelBasis {
   // stencil, and the pixel's triangle has the whole light in front of it
   // (FacingAway::clearOfLight).
   bool ready = false;
+  // A disk or rectangle light (light.h): its samples are fixed points of its area, and every
+  // test below bounds it by its bounding ball (light.radius), which holds them all.
+  bool planar = false;
+  // A point inside a planar light's bounding ball (setupPixel): no cone holds the light, so
+  // its samples are counted segment by segment instead (exact_technique.cpp).
+  bool inside_light = false;
   int32_t stencil = 0;
   uint32_t primitive = kNoPrimitive;  // the visible triangle, left out of every count
   RayStart start;
@@ -80,7 +86,8 @@ inline bool segmentHitsTriangle(const dvec3& o, const dvec3& d, double t_max,
   return segmentHitsTriangle(o, d, t_max, t.v[0], t.v[1], t.v[2]);
 }
 
-// Sets up the basis of a pixel; false when its visibility is already known (`known`).
+// Sets up the basis of a pixel; false when its visibility is already known (`known`), or, for a
+// planar light, when the point lies inside its bounding ball (f.inside_light).
 // `triangle`: the work item's last visible triangle, for RayOrigins::start.
 // `replayed`: the visible triangle's mesh is a z-pass volume whose quads quadCountShift moves to
 // the shaded point, and the visible triangle is taken out as the segment from there to the

@@ -384,6 +384,138 @@ TileDepthParts tileDepthParts(const DepthBuffer& depth, int level) {
   return parts;
 }
 
+namespace {
+
+// The float planes of the quick reject, and each one's margin: the float evaluation error of E
+// at any pixel centre of the image with z in [0, 1], four roundings, each within FLT_EPSILON
+// of the terms' magnitudes (wedge_culling.cpp). The shaded point's offset is added per pixel
+// (PixelBlock::offset) or per tile row.
+struct FloatPlanes {
+  double x_max, y_max;
+  void operator()(const ScreenPlaneD& p, float out[4], float& plane_margin) const {
+    out[0] = float(p.a);
+    out[1] = float(p.b);
+    out[2] = float(p.c);
+    out[3] = float(p.d);
+    plane_margin = float(8.0 * FLT_EPSILON * (std::fabs(p.a) * x_max + std::fabs(p.b) * y_max +
+                                              std::fabs(p.c) + std::fabs(p.d)));
+  }
+};
+
+// How far every shaded point can lie outside the scene's box: margin_footprints pixel
+// footprints (distance to the eye times the pixel angle) of a visible point, taken at the
+// box's farthest corner, and a little more for rounding.
+double boundsPad(const dvec3& bounds_min, const dvec3& bounds_max, const View& view,
+                 double margin_footprints, double pixel_angle) {
+  const dvec3 eye(view.eye);
+  const double farthest =
+      glm::length(glm::max(glm::abs(bounds_min - eye), glm::abs(bounds_max - eye)));
+  return margin_footprints * pixel_angle * farthest * 1.01 +
+         1e-6 * (glm::length(bounds_max - bounds_min) + glm::length(eye) + farthest);
+}
+
+// An edge's quick-reject record (EdgeScreenTest) from its region: the region's planes, and per
+// triangle its plane, side of the light, cut flag, weight and extent from the light centre.
+void fillEdgeTest(const Region& region, const PotentialEdge& e, const Light& light,
+                  const FloatPlanes& toFloat, EdgeScreenTest& test) {
+  const dvec3 light_centre(light.center);
+  test.region_count = int8_t(region.plane_count);
+  for (int k = 0; k < region.plane_count; ++k)
+    toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
+  test.triangle_count = int8_t(region.triangle_count);
+  auto fromLight = [&](const dvec3& v, float out[3]) {
+    const dvec3 d = v - light_centre;
+    out[0] = float(d.x);
+    out[1] = float(d.y);
+    out[2] = float(d.z);
+    return glm::length(d);
+  };
+  const double ends_extent = std::max(fromLight(e.a, test.ends[0]), fromLight(e.b, test.ends[1]));
+  for (int k = 0; k < region.triangle_count; ++k) {
+    const EdgeTriangle& t = *region.triangle[size_t(k)];
+    toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
+    test.light_above[k] = t.light_above;
+    test.cuts[k] = t.cuts;
+    test.any_cuts |= t.cuts;
+    // A cutting triangle in front of the light counts on either side: -winding where its plane
+    // value is positive, +winding where negative (edgeAtPixel: weight -= winding * sign); the
+    // kernel adds `weight` on the positive side and subtracts it on the other.
+    test.weight[k] = int8_t(t.cuts ? -t.winding : t.light_above ? t.winding : -t.winding);
+    const double extent = std::max(ends_extent, fromLight(t.opposite, test.opposite[k]));
+    test.cut_extent[k] = float((extent + double(light.radius)) * (1.0 + 1e-6));
+  }
+}
+
+// What the scan of a region's tiles reads: the tiles' depth ranges (padded past the last tile
+// for edgeTileCandidates) and their depth parts.
+struct TileScan {
+  std::vector<float> zmin, zmax;
+  TileDepthParts depth_parts;
+  EdgeTileParts parts;
+  EdgeTileBox box(const Region& region, const EdgeBins& bins, const View& view) const {
+    EdgeTileBox box;
+    box.zmin = zmin.data();
+    box.zmax = zmax.data();
+    box.columns = bins.columns;
+    box.tx0 = region.tx0;
+    box.tx1 = region.tx1;
+    box.ty0 = region.ty0;
+    box.ty1 = region.ty1;
+    box.size = 1 << bins.level;
+    box.width = view.width;
+    box.height = view.height;
+    box.offset = bins.offset;
+    box.parts = &parts;
+    return box;
+  }
+};
+
+// Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending item
+// order within a tile: chunks in order, then a counting sort by tile). Each region's screen
+// box goes through the tile form of the pixels' quick reject (edgeTileCandidates): a flat SIMD
+// scan of the box's tiles, row by row.
+template <class RegionOf>
+void binItems(size_t count, const RegionOf& regionOf, const std::vector<EdgeScreenTest>& tests,
+              const TileScan& scan, const View& view, bool simd, EdgeBins& bins,
+              std::vector<uint32_t>& begin, std::vector<uint32_t>& items) {
+  struct Part {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, item)
+    uint64_t tested = 0, culled = 0;
+  };
+  const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
+  const size_t chunk_size = std::clamp(count / 64, kMinChunk, kChunk);
+  const size_t chunks = (count + chunk_size - 1) / chunk_size;
+  std::vector<Part> parts(chunks);
+  parallelFor(chunks, [&](size_t chunk) {
+    Part& part = parts[chunk];
+    std::vector<uint32_t> kept(tiles);
+    const size_t end = std::min(count, (chunk + 1) * chunk_size);
+    for (size_t i = chunk * chunk_size; i < end; ++i) {
+      const Region region = regionOf(i);
+      if (region.tx0 > region.tx1 || region.ty0 > region.ty1) continue;
+      const EdgeTileBox box = scan.box(region, bins, view);
+      int tested = 0;
+      const int kept_count = edgeTileCandidates(tests[i], box, kept.data(), tested, simd);
+      part.tested += uint64_t(tested);
+      part.culled += uint64_t(tested - kept_count);
+      for (int k = 0; k < kept_count; ++k) part.pairs.emplace_back(kept[size_t(k)], uint32_t(i));
+    }
+  });
+  begin.assign(tiles + 1, 0);
+  for (const Part& part : parts) {
+    for (const auto& [t, item] : part.pairs) ++begin[t + 1];
+    bins.tiles_tested += part.tested;
+    bins.tiles_culled += part.culled;
+  }
+  for (size_t t = 0; t < tiles; ++t) begin[t + 1] += begin[t];
+  items.resize(begin[tiles]);
+  std::vector<uint32_t> cursor(begin.begin(), begin.end() - 1);
+  for (const Part& part : parts)
+    for (const auto& [t, item] : part.pairs) items[cursor[t]++] = item;
+}
+
+}  // namespace
+
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
                   const DepthBuffer& depth, int level, double margin_footprints,
                   const Bounds3& scene_bounds, bool simd) {
@@ -392,7 +524,6 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   const int tile = 1 << level;
   bins.columns = (view.width + tile - 1) / tile;
   bins.rows = (view.height + tile - 1) / tile;
-  const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
   // A point d world units off its depth-buffer point changes a plane value by at most d, and
   // E by d / w; the shaded points stay within margin_footprints * w * pixel angle.
   const double pixel_angle = 2.0 / (double(view.projection[1][1]) * view.height);
@@ -400,133 +531,34 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   // In float for the quick reject, rounded up (the sums margin + offset it enters are rounded
   // once more, far inside the 8 FLT_EPSILON of the planes' own margins).
   bins.offset = float(margin * (1.0 + 1e-5));
-  // Every shaded point lies within margin_footprints pixel footprints (distance to the eye
-  // times the pixel angle) of a visible point of the scene; the box is widened by that at the
-  // scene's farthest corner, and a little more for rounding.
+  // The regions are cut to the scene's box, widened by how far a shaded point can lie off it.
   const bool bounded =
       !scene_bounds.empty() && isFinite(scene_bounds.min) && isFinite(scene_bounds.max);
   const dvec3 bounds_min = bounded ? dvec3(scene_bounds.min) : dvec3(0.0);
   const dvec3 bounds_max = bounded ? dvec3(scene_bounds.max) : dvec3(0.0);
-  const dvec3 eye(view.eye);
-  const double farthest =
-      glm::length(glm::max(glm::abs(bounds_min - eye), glm::abs(bounds_max - eye)));
-  const double pad = margin_footprints * pixel_angle * farthest * 1.01 +
-                     1e-6 * (glm::length(bounds_max - bounds_min) + glm::length(eye) + farthest);
+  const double pad = boundsPad(bounds_min, bounds_max, view, margin_footprints, pixel_angle);
   const RegionBuilder builder(light, view, level, bounded, bounds_min - dvec3(pad),
                               bounds_max + dvec3(pad));
   bins.tests.resize(edges.edges.size());
-  const dvec3 light_centre(light.center);
   bins.cutting_tests.resize(edges.cutting.size());
-  // Float evaluation error of E at any pixel centre of the image with z in [0, 1]: four
-  // roundings, each within FLT_EPSILON of the terms' magnitudes (wedge_culling.cpp). The
-  // shaded point's offset is added per pixel (PixelBlock::offset) or per tile row.
-  const double x_max = view.width + 0.5, y_max = view.height + 0.5;
-  auto toFloat = [&](const ScreenPlaneD& p, float out[4], float& plane_margin) {
-    out[0] = float(p.a);
-    out[1] = float(p.b);
-    out[2] = float(p.c);
-    out[3] = float(p.d);
-    plane_margin = float(8.0 * FLT_EPSILON * (std::fabs(p.a) * x_max + std::fabs(p.b) * y_max +
-                                              std::fabs(p.c) + std::fabs(p.d)));
-  };
-
-  struct Part {
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (tile, item)
-    uint64_t tested = 0, culled = 0;
-  };
-  // The tiles' depth ranges with the padding edgeTileCandidates reads past the last tile.
+  const FloatPlanes toFloat{view.width + 0.5, view.height + 0.5};
+  TileScan scan;
   const TileDepthRange& range = depth.tileRange(level);
-  std::vector<float> zmin(range.zmin.size() + kTileBoxPadding, 0.0f);
-  std::vector<float> zmax(range.zmax.size() + kTileBoxPadding, 0.0f);
-  std::copy_n(range.zmin.data(), range.zmin.size(), zmin.begin());
-  std::copy_n(range.zmax.data(), range.zmax.size(), zmax.begin());
-  const TileDepthParts depth_parts = tileDepthParts(depth, level);
-  const EdgeTileParts tile_parts = depth_parts.view();
-  // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending
-  // item order within a tile: chunks in order, then a counting sort by tile).
-  auto binAll = [&](size_t count, const auto& regionOf, const std::vector<EdgeScreenTest>& tests,
-                    std::vector<uint32_t>& begin, std::vector<uint32_t>& items) {
-    const size_t chunk_size = std::clamp(count / 64, kMinChunk, kChunk);
-    const size_t chunks = (count + chunk_size - 1) / chunk_size;
-    std::vector<Part> parts(chunks);
-    parallelFor(chunks, [&](size_t chunk) {
-      Part& part = parts[chunk];
-      std::vector<uint32_t> kept(tiles);
-      const size_t end = std::min(count, (chunk + 1) * chunk_size);
-      for (size_t i = chunk * chunk_size; i < end; ++i) {
-        const Region region = regionOf(i);
-        // The region's screen box through the tile form of the pixels' quick reject
-        // (edgeTileCandidates): a flat SIMD scan of the box's tiles, row by row.
-        if (region.tx0 > region.tx1 || region.ty0 > region.ty1) continue;
-        EdgeTileBox box;
-        box.zmin = zmin.data();
-        box.zmax = zmax.data();
-        box.columns = bins.columns;
-        box.tx0 = region.tx0;
-        box.tx1 = region.tx1;
-        box.ty0 = region.ty0;
-        box.ty1 = region.ty1;
-        box.size = tile;
-        box.width = view.width;
-        box.height = view.height;
-        box.offset = bins.offset;
-        box.parts = &tile_parts;
-        int tested = 0;
-        const int kept_count = edgeTileCandidates(tests[i], box, kept.data(), tested, simd);
-        part.tested += uint64_t(tested);
-        part.culled += uint64_t(tested - kept_count);
-        for (int k = 0; k < kept_count; ++k) part.pairs.emplace_back(kept[size_t(k)], uint32_t(i));
-      }
-    });
-    begin.assign(tiles + 1, 0);
-    for (const Part& part : parts) {
-      for (const auto& [t, item] : part.pairs) ++begin[t + 1];
-      bins.tiles_tested += part.tested;
-      bins.tiles_culled += part.culled;
-    }
-    for (size_t t = 0; t < tiles; ++t) begin[t + 1] += begin[t];
-    items.resize(begin[tiles]);
-    std::vector<uint32_t> cursor(begin.begin(), begin.end() - 1);
-    for (const Part& part : parts)
-      for (const auto& [t, item] : part.pairs) items[cursor[t]++] = item;
-  };
-
-  binAll(
+  scan.zmin.assign(range.zmin.size() + kTileBoxPadding, 0.0f);
+  scan.zmax.assign(range.zmax.size() + kTileBoxPadding, 0.0f);
+  std::copy_n(range.zmin.data(), range.zmin.size(), scan.zmin.begin());
+  std::copy_n(range.zmax.data(), range.zmax.size(), scan.zmax.begin());
+  scan.depth_parts = tileDepthParts(depth, level);
+  scan.parts = scan.depth_parts.view();
+  binItems(
       edges.edges.size(),
       [&](size_t i) {
         const Region region = builder.region(edges.edges[i], edges.triangles.data());
-        EdgeScreenTest& test = bins.tests[i];
-        test.region_count = int8_t(region.plane_count);
-        for (int k = 0; k < region.plane_count; ++k)
-          toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
-        test.triangle_count = int8_t(region.triangle_count);
-        const PotentialEdge& e = edges.edges[i];
-        auto fromLight = [&](const dvec3& v, float out[3]) {
-          const dvec3 d = v - light_centre;
-          out[0] = float(d.x);
-          out[1] = float(d.y);
-          out[2] = float(d.z);
-          return glm::length(d);
-        };
-        const double ends_extent =
-            std::max(fromLight(e.a, test.ends[0]), fromLight(e.b, test.ends[1]));
-        for (int k = 0; k < region.triangle_count; ++k) {
-          const EdgeTriangle& t = *region.triangle[size_t(k)];
-          toFloat(region.triangles[size_t(k)], test.triangle[k], test.triangle_margin[k]);
-          test.light_above[k] = t.light_above;
-          test.cuts[k] = t.cuts;
-          test.any_cuts |= t.cuts;
-          // A cutting triangle in front of the light counts on either side: -winding where its
-          // plane value is positive, +winding where negative (edgeAtPixel: weight -= winding *
-          // sign); the kernel adds `weight` on the positive side and subtracts it on the other.
-          test.weight[k] = int8_t(t.cuts ? -t.winding : t.light_above ? t.winding : -t.winding);
-          const double extent = std::max(ends_extent, fromLight(t.opposite, test.opposite[k]));
-          test.cut_extent[k] = float((extent + double(light.radius)) * (1.0 + 1e-6));
-        }
+        fillEdgeTest(region, edges.edges[i], light, toFloat, bins.tests[i]);
         return region;
       },
-      bins.tests, bins.begin, bins.edges);
-  binAll(
+      bins.tests, scan, view, simd, bins, bins.begin, bins.edges);
+  binItems(
       edges.cutting.size(),
       [&](size_t i) {
         const Region region = builder.region(edges.cutting[i]);
@@ -536,7 +568,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
           toFloat(region.planes[size_t(k)], test.region[k], test.region_margin[k]);
         return region;
       },
-      bins.cutting_tests, bins.cutting_begin, bins.cutting);
+      bins.cutting_tests, scan, view, simd, bins, bins.cutting_begin, bins.cutting);
   return bins;
 }
 
