@@ -118,6 +118,45 @@ std::unique_ptr<PreparedTechnique> prepareOracle(const Scene& scene, int rays, u
 uint64_t searchSeed(int rays) { return 1000003ull + uint64_t(rays); }
 constexpr uint64_t kReferenceSeed = 1;
 
+// The median wall-clock time of `runs` renders of every light.
+double medianRenderMs(const PreparedTechnique& prepared, const Scene& scene, const View& view,
+                      const EyeBuffers& eye, const RenderContext& context, int runs) {
+  std::vector<double> times;
+  for (int r = 0; r < runs; ++r) {
+    double ms = 0;
+    renderLights(prepared, scene, view, eye, context, ms);
+    times.push_back(ms);
+  }
+  return medianOf(times);
+}
+
+// The row's strip: a technique whose every light's image equals an earlier one's (the wedge
+// implementations agree pixel for pixel) links that strip instead of writing a copy; otherwise
+// its strip is written (where asked for) and its images kept in `rendered` for the later ones.
+void placeStrip(const FidelityOptions& o, const FidelityScene& out,
+                const std::vector<Image<float>>& v, const std::vector<Image<float>>& reference,
+                std::vector<std::pair<std::string, std::vector<Image<float>>>>& rendered,
+                FidelityRow& row) {
+  for (const auto& [earlier, images] : rendered)
+    if (std::equal(v.begin(), v.end(), images.begin(), images.end(),
+                   [](const Image<float>& a, const Image<float>& b) {
+                     return compareExact(a, b).differing == 0;
+                   })) {
+      row.same_as = earlier;
+      break;
+    }
+  if (!row.same_as.empty()) {
+    for (const FidelityRow& r : out.rows)
+      if (r.technique == row.same_as) row.strip = r.strip;
+  } else if (!o.strip_dir.empty()) {
+    const std::string file = fmt::format("{}-{}.png", out.label, row.technique);
+    writeFidelityStrip((fs::path(o.strip_dir) / file).string(), v[0], reference[0],
+                       o.heat_scale, o.strip_shrink);
+    row.strip = o.strip_prefix + file;
+  }
+  if (row.same_as.empty()) rendered.emplace_back(row.technique, v);
+}
+
 FidelityScene measureScene(const FidelityOptions& o, const std::string& name, const Scene& scene,
                            const std::vector<std::string>& techniques, ProgressBar& progress) {
   auto log = [&](const std::string& line) {
@@ -159,13 +198,7 @@ FidelityScene measureScene(const FidelityOptions& o, const std::string& name, co
       double first_ms = 0;
       const std::vector<Image<float>> v =
           renderLights(*prepared, scene, view, eye, context, first_ms);  // also the warm-up
-      std::vector<double> runs;
-      for (int r = 0; r < o.timing_runs; ++r) {
-        double ms = 0;
-        renderLights(*prepared, scene, view, eye, context, ms);
-        runs.push_back(ms);
-      }
-      row.technique_ms = medianOf(runs);
+      row.technique_ms = medianRenderMs(*prepared, scene, view, eye, context, o.timing_runs);
       row.error = fidelityError(v, reference, eye.depth.depth, o.tolerance);
       const int at = extendUntilReached(out.curve, row.error.penumbra.mae, o.max_search_rays,
                                         measureRays);
@@ -174,26 +207,7 @@ FidelityScene measureScene(const FidelityOptions& o, const std::string& name, co
         row.equal_error_ms = out.curve[size_t(at)].ms;
         row.speed_ratio = row.technique_ms > 0 ? row.equal_error_ms / row.technique_ms : 0.0;
       }
-      // A technique whose every light's image equals an earlier one's (the wedge
-      // implementations agree pixel for pixel) links that strip instead of writing a copy.
-      for (const auto& [earlier, images] : rendered)
-        if (std::equal(v.begin(), v.end(), images.begin(), images.end(),
-                       [](const Image<float>& a, const Image<float>& b) {
-                         return compareExact(a, b).differing == 0;
-                       })) {
-          row.same_as = earlier;
-          break;
-        }
-      if (!row.same_as.empty()) {
-        for (const FidelityRow& r : out.rows)
-          if (r.technique == row.same_as) row.strip = r.strip;
-      } else if (!o.strip_dir.empty()) {
-        const std::string file = fmt::format("{}-{}.png", out.label, technique);
-        writeFidelityStrip((fs::path(o.strip_dir) / file).string(), v[0], reference[0],
-                           o.heat_scale, o.strip_shrink);
-        row.strip = o.strip_prefix + file;
-      }
-      if (row.same_as.empty()) rendered.emplace_back(technique, v);
+      placeStrip(o, out, v, reference, rendered, row);
       log(fmt::format("{}: {}: penumbra MAE {:.4f}, {:.1f} ms, equal-error rays {}", out.label,
                       technique, row.error.penumbra.mae, row.technique_ms,
                       row.equal_error_rays > 0 ? fmt::format("{}", row.equal_error_rays)

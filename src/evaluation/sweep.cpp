@@ -6,6 +6,7 @@
 #include <chrono>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -161,11 +162,134 @@ void checkOptions(const SweepOptions& o) {
                    kind);
 }
 
+// The configurations of one scene, in the order they are measured: CullMode::None first for
+// every implementation (the other modes are compared against it), the three-pass
+// implementation first, then the original 2002 algorithm if asked for.
+std::vector<Pending> sweepConfigurations(const SweepOptions& o, const Scene& scene,
+                                         const std::string& scene_name) {
+  std::vector<CullMode> modes = o.cull_modes;
+  std::stable_sort(modes.begin(), modes.end(), [](CullMode a, CullMode b) {
+    return a == CullMode::None && b != CullMode::None;
+  });
+  std::vector<std::string> kinds = o.implementations;
+  std::stable_sort(kinds.begin(), kinds.end(), [](const std::string& a, const std::string& b) {
+    return a == kSweepThreePass && b != kSweepThreePass;
+  });
+  std::vector<Pending> configs;
+  auto addConfig = [&](const std::string& kind, CullMode cull, int level) {
+    Pending p;
+    p.row.scene = scene.name.empty() ? scene_name : scene.name;
+    p.row.width = o.width;
+    p.row.height = o.height;
+    p.row.lights = int(scene.lights.size());
+    p.row.kind = kind;
+    p.row.cull = cull;
+    p.row.tile_level = level;
+    p.options = techniqueOptionsFor(o, p.row);
+    configs.push_back(std::move(p));
+  };
+  for (const std::string& kind : kinds)
+    for (CullMode cull : modes)
+      for (int level : o.tile_levels) addConfig(kind, cull, level);
+  if (o.original_2002) addConfig(kSweep2002, CullMode::None, 0);
+  return configs;
+}
+
+// What a configuration's first run is compared with: per implementation, its first
+// CullMode::None run; the first three-pass CullMode::None run; and the visibility the shading
+// is timed on.
+struct SweepReferences {
+  std::map<std::string, Visibilities> uncull;
+  std::optional<Visibilities> three_pass;
+  Visibilities shade;
+};
+
+// A configuration's first run against the references (taken from it where it is the first).
+void compareFirstRun(Pending& p, Visibilities& visibility, SweepReferences& refs) {
+  const bool restructured = p.row.kind != kSweep2002;
+  if (restructured) {
+    auto it = refs.uncull.find(p.row.kind);
+    if (it == refs.uncull.end()) {
+      // The reference itself: also checked against the other levels' None runs below.
+      it = refs.uncull.emplace(p.row.kind, visibility).first;
+    }
+    p.row.cull_mismatch_pixels = int64_t(compareVisibility(it->second, visibility).differing);
+  }
+  if (!refs.three_pass && p.row.kind == kSweepThreePass && p.row.cull == CullMode::None)
+    refs.three_pass = visibility;
+  if (refs.three_pass) {
+    const ExactDifference d = compareVisibility(*refs.three_pass, visibility);
+    p.row.pixels_differing_from_3pass = int64_t(d.differing);
+    p.row.max_diff_from_3pass = d.max_error;
+  }
+  if (refs.shade.lights.empty()) refs.shade = std::move(visibility);
+}
+
+// Shading is timed on a wedge visibility: the "frame" of Figure 9 is eye + technique + shade.
+// The median of `repeat` runs (none without a visibility).
+double medianShadeMs(const Scene& scene, const View& view, const EyeBuffers& eye,
+                     const Visibilities& visibility, int repeat) {
+  std::vector<double> shade_runs;
+  if (!visibility.lights.empty()) {
+    std::vector<const Image<float>*> pointers;
+    for (const Image<float>& v : visibility.lights) pointers.push_back(&v);
+    Image<vec3> color;
+    for (int r = 0; r < repeat; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      shadeFrameInto(scene, view, eye, pointers, color);
+      shade_runs.push_back(1e3 * secondsSince(start));
+    }
+  }
+  return medianOf(shade_runs);
+}
+
+// The oracle's row: oracle_repeat runs, the first compared with the three-pass reference.
+SweepRow measureOracle(const SweepOptions& o, const std::string& row_scene, const Scene& scene,
+                       const RenderContext& context, const View& view, const EyeBuffers& eye,
+                       const std::optional<Visibilities>& three_pass, ProgressBar& bar,
+                       double eye_ms, double shade_ms) {
+  Pending p;
+  p.row.scene = row_scene;
+  p.row.width = o.width;
+  p.row.height = o.height;
+  p.row.lights = int(scene.lights.size());
+  p.row.kind = kSweepOracle;
+  p.row.rays = o.oracle_rays;
+  p.options = techniqueOptionsFor(o, p.row);
+  for (int r = 0; r < o.oracle_repeat; ++r) {
+    double ms = 0, cpu_ms = 0;
+    Visibilities visibility;
+    const Stats stats =
+        runOnce(p.options, context, scene, view, eye, r == 0 ? &visibility : nullptr, ms, cpu_ms);
+    record(p, stats, ms, cpu_ms);
+    bar.add();
+    if (r == 0 && three_pass) {
+      const ExactDifference d = compareVisibility(*three_pass, visibility);
+      p.row.pixels_differing_from_3pass = int64_t(d.differing);
+      p.row.max_diff_from_3pass = d.max_error;
+    }
+  }
+  return finish(p, eye_ms, shade_ms);
+}
+
+void logSweepProblems(const std::vector<SweepRow>& rows,
+                      const std::function<void(const std::string&)>& log) {
+  for (const SweepRow& row : rows) {
+    if (row.cull_mismatch_pixels > 0)
+      log(fmt::format("MISMATCH: {} {} culling {} tiles {}x{}: {} pixels differ from culling none",
+                      row.scene, row.techniqueLabel(), cullModeName(row.cull), 1 << row.tile_level,
+                      1 << row.tile_level, row.cull_mismatch_pixels));
+    if (!row.counters_repeatable)
+      log(fmt::format("UNREPEATABLE: {} {} culling {} level {}: counters changed between runs",
+                      row.scene, row.techniqueLabel(), cullModeName(row.cull), row.tile_level));
+  }
+}
+
 // Rows of one scene, measured in rounds: every configuration once per round, so a neighbour's
 // load on a shared machine falls on all of them alike instead of on a few.
 std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene_name,
                                  bool run_oracle) {
-  auto log = [&](const std::string& line) {
+  const std::function<void(const std::string&)> log = [&](const std::string& line) {
     if (o.log) o.log(line);
   };
   const auto load_start = std::chrono::steady_clock::now();
@@ -185,42 +309,12 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
   }
   const double eye_ms = medianOf(eye_runs);
 
-  // CullMode::None first for every implementation: the other modes are compared against it.
-  std::vector<CullMode> modes = o.cull_modes;
-  std::stable_sort(modes.begin(), modes.end(), [](CullMode a, CullMode b) {
-    return a == CullMode::None && b != CullMode::None;
-  });
-  std::vector<std::string> kinds = o.implementations;
-  std::stable_sort(kinds.begin(), kinds.end(), [](const std::string& a, const std::string& b) {
-    return a == kSweepThreePass && b != kSweepThreePass;
-  });
-
-  std::vector<Pending> configs;
-  auto addConfig = [&](const std::string& kind, CullMode cull, int level) {
-    Pending p;
-    p.row.scene = scene.name.empty() ? scene_name : scene.name;
-    p.row.width = o.width;
-    p.row.height = o.height;
-    p.row.lights = int(scene.lights.size());
-    p.row.kind = kind;
-    p.row.cull = cull;
-    p.row.tile_level = level;
-    p.options = techniqueOptionsFor(o, p.row);
-    configs.push_back(std::move(p));
-  };
-  for (const std::string& kind : kinds)
-    for (CullMode cull : modes)
-      for (int level : o.tile_levels) addConfig(kind, cull, level);
-  if (o.original_2002) addConfig(kSweep2002, CullMode::None, 0);
-
+  std::vector<Pending> configs = sweepConfigurations(o, scene, scene_name);
   std::unique_ptr<ProgressBar> bar = std::make_unique<ProgressBar>(
       "sweep " + scene_name,
       uint64_t(configs.size()) * uint64_t(o.repeat) + (run_oracle ? uint64_t(o.oracle_repeat) : 0),
       o.show_progress);
-
-  std::map<std::string, Visibilities> uncull_reference;  // first CullMode::None run per kind
-  std::optional<Visibilities> three_pass_reference;
-  Visibilities shade_visibility;
+  SweepReferences refs;
   for (int round = 0; round < o.repeat; ++round) {
     for (Pending& p : configs) {
       double ms = 0, cpu_ms = 0;
@@ -230,80 +324,18 @@ std::vector<SweepRow> sweepScene(const SweepOptions& o, const std::string& scene
           runOnce(p.options, context, scene, view, eye, first ? &visibility : nullptr, ms, cpu_ms);
       record(p, stats, ms, cpu_ms);
       bar->add();
-      if (!first) continue;
-      const bool restructured = p.row.kind != kSweep2002;
-      if (restructured) {
-        auto it = uncull_reference.find(p.row.kind);
-        if (it == uncull_reference.end()) {
-          // The reference itself: also checked against the other levels' None runs below.
-          it = uncull_reference.emplace(p.row.kind, visibility).first;
-        }
-        p.row.cull_mismatch_pixels = int64_t(compareVisibility(it->second, visibility).differing);
-      }
-      if (!three_pass_reference && p.row.kind == kSweepThreePass &&
-          p.row.cull == CullMode::None)
-        three_pass_reference = visibility;
-      if (three_pass_reference) {
-        const ExactDifference d = compareVisibility(*three_pass_reference, visibility);
-        p.row.pixels_differing_from_3pass = int64_t(d.differing);
-        p.row.max_diff_from_3pass = d.max_error;
-      }
-      if (shade_visibility.lights.empty()) shade_visibility = std::move(visibility);
+      if (first) compareFirstRun(p, visibility, refs);
     }
   }
-
-  // Shading is timed on a wedge visibility: the "frame" of Figure 9 is eye + technique + shade.
-  std::vector<double> shade_runs;
-  if (!shade_visibility.lights.empty()) {
-    std::vector<const Image<float>*> pointers;
-    for (const Image<float>& v : shade_visibility.lights) pointers.push_back(&v);
-    Image<vec3> color;
-    for (int r = 0; r < o.repeat; ++r) {
-      const auto start = std::chrono::steady_clock::now();
-      shadeFrameInto(scene, view, eye, pointers, color);
-      shade_runs.push_back(1e3 * secondsSince(start));
-    }
-  }
-  const double shade_ms = medianOf(shade_runs);
+  const double shade_ms = medianShadeMs(scene, view, eye, refs.shade, o.repeat);
 
   std::vector<SweepRow> rows;
   for (Pending& p : configs) rows.push_back(finish(p, eye_ms, shade_ms));
-
-  if (run_oracle) {
-    Pending p;
-    p.row.scene = rows.empty() ? scene_name : rows.front().scene;
-    p.row.width = o.width;
-    p.row.height = o.height;
-    p.row.lights = int(scene.lights.size());
-    p.row.kind = kSweepOracle;
-    p.row.rays = o.oracle_rays;
-    p.options = techniqueOptionsFor(o, p.row);
-    for (int r = 0; r < o.oracle_repeat; ++r) {
-      double ms = 0, cpu_ms = 0;
-      Visibilities visibility;
-      const Stats stats =
-          runOnce(p.options, context, scene, view, eye, r == 0 ? &visibility : nullptr, ms, cpu_ms);
-      record(p, stats, ms, cpu_ms);
-      bar->add();
-      if (r == 0 && three_pass_reference) {
-        const ExactDifference d = compareVisibility(*three_pass_reference, visibility);
-        p.row.pixels_differing_from_3pass = int64_t(d.differing);
-        p.row.max_diff_from_3pass = d.max_error;
-      }
-    }
-    rows.push_back(finish(p, eye_ms, shade_ms));
-  }
+  if (run_oracle)
+    rows.push_back(measureOracle(o, rows.empty() ? scene_name : rows.front().scene, scene,
+                                 context, view, eye, refs.three_pass, *bar, eye_ms, shade_ms));
   bar->finish();
-
-  for (const SweepRow& row : rows) {
-    if (row.cull_mismatch_pixels > 0)
-      log(fmt::format("MISMATCH: {} {} culling {} tiles {}x{}: {} pixels differ from culling none",
-                      row.scene, row.techniqueLabel(), cullModeName(row.cull), 1 << row.tile_level,
-                      1 << row.tile_level, row.cull_mismatch_pixels));
-    if (!row.counters_repeatable)
-      log(fmt::format("UNREPEATABLE: {} {} culling {} level {}: counters changed between runs",
-                      row.scene, row.techniqueLabel(), cullModeName(row.cull), row.tile_level));
-  }
+  logSweepProblems(rows, log);
   log(fmt::format("{}: eye pass {:.1f} ms, shading {:.1f} ms, {} configurations x {} runs",
                   scene_name, eye_ms, shade_ms, configs.size(), o.repeat));
   return rows;

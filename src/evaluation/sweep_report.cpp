@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <ostream>
 
 #include "core/error.h"
@@ -79,6 +80,80 @@ std::string passColumn(const std::string& pass) {
   return name + "_ms";
 }
 
+double testsPerInside(const SweepRow* r) {
+  return r ? ratio(double(r->counters.penumbra_tests), double(r->counters.penumbra_inside))
+           : 0.0;
+}
+
+// One implementation's figures on one scene (none without its unculled row); the frame time of
+// its fastest fully culled row lowers fastest_wedge_frame.
+std::optional<SweepSceneSummary::Implementation> summarizeImplementation(
+    const std::vector<const SweepRow*>& rows, const std::string& kind, const SweepRow* original,
+    double& fastest_wedge_frame) {
+  const SweepRow* none = uncullRow(rows, kind);
+  if (!none) return std::nullopt;
+  SweepSceneSummary::Implementation impl;
+  impl.kind = kind;
+  const SweepRow* full_mem = bestRow(rows, kind, CullMode::Full, Best::Memory);
+  const SweepRow* full_mem_tiles = bestRow(rows, kind, CullMode::Full, Best::MemoryWithTiles);
+  const SweepRow* full = bestRow(rows, kind, CullMode::Full, Best::Time);
+  const SweepRow* zmax = bestRow(rows, kind, CullMode::ZMax, Best::Time);
+  const std::string pass = culledPass(kind);
+  if (original) impl.restructured_speedup = ratio(original->technique_ms, none->technique_ms);
+  impl.none_tests_per_inside = testsPerInside(none);
+  if (full_mem) impl.best_level_memory = full_mem->tile_level;
+  if (full_mem_tiles) impl.best_level_memory_tiles = full_mem_tiles->tile_level;
+  if (full) {
+    impl.best_level_time = full->tile_level;
+    impl.culling_speedup = ratio(none->technique_ms, full->technique_ms);
+    impl.culling_speedup_pass = ratio(none->passMs(pass), full->passMs(pass));
+    impl.full_tests_per_inside = testsPerInside(full);
+    if (original) impl.speedup_vs_2002 = ratio(original->technique_ms, full->technique_ms);
+    if (fastest_wedge_frame == 0 || full->frame_ms < fastest_wedge_frame)
+      fastest_wedge_frame = full->frame_ms;
+  }
+  if (zmax) {
+    impl.zmax_speedup_pass = ratio(none->passMs(pass), zmax->passMs(pass));
+    impl.zmax_tests_per_inside = testsPerInside(zmax);
+  }
+  return impl;
+}
+
+// Section 7: "in the range of tile sizes from 8x8 to 32x32 pixels, the single pass algorithm
+// used about 5% fewer stencil buffer write accesses and 30-60% fewer depth buffer read
+// accesses ... together, this saves 20-30%": the single pass's savings, averaged over the
+// levels 3..5 both implementations have.
+void summarizeSinglePassSavings(const std::vector<const SweepRow*>& rows,
+                                SweepSceneSummary& s) {
+  double writes = 0, reads = 0, accesses = 0, accesses_unculled = 0;
+  int levels = 0;
+  for (int level = 3; level <= 5; ++level) {
+    const SweepRow* three = findRow(rows, kSweepThreePass, CullMode::Full, level);
+    const SweepRow* single = findRow(rows, kSweepSinglePass, CullMode::Full, level);
+    if (!three || !single) continue;
+    writes += 1.0 - ratio(double(single->counters.stencil_writes),
+                          double(three->counters.stencil_writes));
+    reads += 1.0 - ratio(double(single->counters.z_reads), double(three->counters.z_reads));
+    accesses += 1.0 - ratio(double(single->memoryAccesses()), double(three->memoryAccesses()));
+    // Three-pass reads = umbra reads + penumbra reads (one per penumbra test).
+    const SweepRow* three_none = findRow(rows, kSweepThreePass, CullMode::None, level);
+    if (three_none) {
+      const double umbra_unculled =
+          double(three_none->counters.z_reads - three_none->counters.penumbra_tests);
+      const double three_unculled = umbra_unculled + double(three->counters.penumbra_tests) +
+                                    double(three->counters.stencil_writes);
+      accesses_unculled += 1.0 - ratio(double(single->memoryAccesses()), three_unculled);
+    }
+    ++levels;
+  }
+  if (levels > 0) {
+    s.single_fewer_stencil_writes = writes / levels;
+    s.single_fewer_z_reads = reads / levels;
+    s.single_fewer_accesses = accesses / levels;
+    s.single_fewer_accesses_unculled_umbra = accesses_unculled / levels;
+  }
+}
+
 }  // namespace
 
 std::vector<SweepSceneSummary> summarizeSweep(const SweepResult& result) {
@@ -96,69 +171,11 @@ std::vector<SweepSceneSummary> summarizeSweep(const SweepResult& result) {
     const SweepRow* original = findRow(rows, kSweep2002, CullMode::None, 0);
     double fastest_wedge_frame = 0;
     for (const std::string kind : {kSweepThreePass, kSweepSinglePass}) {
-      const SweepRow* none = uncullRow(rows, kind);
-      if (!none) continue;
-      SweepSceneSummary::Implementation impl;
-      impl.kind = kind;
-      const SweepRow* full_mem = bestRow(rows, kind, CullMode::Full, Best::Memory);
-      const SweepRow* full_mem_tiles = bestRow(rows, kind, CullMode::Full, Best::MemoryWithTiles);
-      const SweepRow* full = bestRow(rows, kind, CullMode::Full, Best::Time);
-      const SweepRow* zmax = bestRow(rows, kind, CullMode::ZMax, Best::Time);
-      const std::string pass = culledPass(kind);
-      if (original) impl.restructured_speedup = ratio(original->technique_ms, none->technique_ms);
-      auto testsPerInside = [](const SweepRow* r) {
-        return r ? ratio(double(r->counters.penumbra_tests), double(r->counters.penumbra_inside))
-                 : 0.0;
-      };
-      impl.none_tests_per_inside = testsPerInside(none);
-      if (full_mem) impl.best_level_memory = full_mem->tile_level;
-      if (full_mem_tiles) impl.best_level_memory_tiles = full_mem_tiles->tile_level;
-      if (full) {
-        impl.best_level_time = full->tile_level;
-        impl.culling_speedup = ratio(none->technique_ms, full->technique_ms);
-        impl.culling_speedup_pass = ratio(none->passMs(pass), full->passMs(pass));
-        impl.full_tests_per_inside = testsPerInside(full);
-        if (original) impl.speedup_vs_2002 = ratio(original->technique_ms, full->technique_ms);
-        if (fastest_wedge_frame == 0 || full->frame_ms < fastest_wedge_frame)
-          fastest_wedge_frame = full->frame_ms;
-      }
-      if (zmax) {
-        impl.zmax_speedup_pass = ratio(none->passMs(pass), zmax->passMs(pass));
-        impl.zmax_tests_per_inside = testsPerInside(zmax);
-      }
-      s.implementations.push_back(impl);
+      std::optional<SweepSceneSummary::Implementation> impl =
+          summarizeImplementation(rows, kind, original, fastest_wedge_frame);
+      if (impl) s.implementations.push_back(std::move(*impl));
     }
-    // Section 7: "in the range of tile sizes from 8x8 to 32x32 pixels, the single pass
-    // algorithm used about 5% fewer stencil buffer write accesses and 30-60% fewer depth buffer
-    // read accesses ... together, this saves 20-30%".
-    double writes = 0, reads = 0, accesses = 0, accesses_unculled = 0;
-    int levels = 0;
-    for (int level = 3; level <= 5; ++level) {
-      const SweepRow* three = findRow(rows, kSweepThreePass, CullMode::Full, level);
-      const SweepRow* single = findRow(rows, kSweepSinglePass, CullMode::Full, level);
-      if (!three || !single) continue;
-      writes += 1.0 - ratio(double(single->counters.stencil_writes),
-                            double(three->counters.stencil_writes));
-      reads += 1.0 - ratio(double(single->counters.z_reads), double(three->counters.z_reads));
-      accesses += 1.0 - ratio(double(single->memoryAccesses()), double(three->memoryAccesses()));
-      // Three-pass reads = umbra reads + penumbra reads (one per penumbra test).
-      const SweepRow* three_none =
-          findRow(rows, kSweepThreePass, CullMode::None, level);
-      if (three_none) {
-        const double umbra_unculled =
-            double(three_none->counters.z_reads - three_none->counters.penumbra_tests);
-        const double three_unculled = umbra_unculled + double(three->counters.penumbra_tests) +
-                                      double(three->counters.stencil_writes);
-        accesses_unculled += 1.0 - ratio(double(single->memoryAccesses()), three_unculled);
-      }
-      ++levels;
-    }
-    if (levels > 0) {
-      s.single_fewer_stencil_writes = writes / levels;
-      s.single_fewer_z_reads = reads / levels;
-      s.single_fewer_accesses = accesses / levels;
-      s.single_fewer_accesses_unculled_umbra = accesses_unculled / levels;
-    }
+    summarizeSinglePassSavings(rows, s);
     for (const SweepRow* r : rows)
       if (r->kind == kSweepOracle && fastest_wedge_frame > 0)
         s.oracle_frame_ratio = ratio(r->frame_ms, fastest_wedge_frame);

@@ -40,6 +40,36 @@ inline bool coversCell(const TileEdges& rect, int level, int width, int height) 
   return true;
 }
 
+namespace cull_detail {
+
+// A rectangle of culling tiles with one code, not drawn yet: columns [cx0, cx1] from row cy0 on.
+struct PendingRun {
+  int cx0, cx1, cy0, code;
+};
+
+// Row cy's runs (`next`, by column) after the rows before: a run identical to one of the
+// previous row's pending rectangles extends it; pending rectangles that no run extends are
+// complete (flush(p, cy - 1)). The runs are then the pending rectangles.
+template <class Flush>
+inline void extendPendingRuns(PendingRun* pending, int& pending_count, PendingRun* next,
+                              int next_count, int cy, Flush& flush) {
+  int k = 0;
+  for (int i = 0; i < pending_count; ++i) {
+    const PendingRun& p = pending[i];
+    while (k < next_count && next[k].cx0 < p.cx0) ++k;
+    if (k < next_count && next[k].cx0 == p.cx0 && next[k].cx1 == p.cx1 &&
+        next[k].code == p.code) {
+      next[k].cy0 = p.cy0;
+    } else {
+      flush(p, cy - 1);
+    }
+  }
+  std::copy(next, next + next_count, pending);
+  pending_count = next_count;
+}
+
+}  // namespace cull_detail
+
 // Walks the culling tiles of level `level` that the rect of `e` touches (a culling tile at least
 // as large as the bin tile contains the rect whole). `e` comes from setupTileRect: the triangle's
 // edges are set up (setupRectEdges) only once a tile of the rect survives the pre-test below.
@@ -97,13 +127,11 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
   if (!setupRectEdges(t, e)) return;  // not handed out by the binner
   const int size = 1 << level;
   const int cx_first = e.x0 >> level, cx_last = e.x1 >> level;
-  struct Pending {
-    int cx0, cx1, cy0, code;
-  };
+  using cull_detail::PendingRun;
   // At most kBinTileSize / 2 culling tiles per row, so at most that many runs.
-  Pending pending[kBinTileSize / 2], next[kBinTileSize / 2];
+  PendingRun pending[kBinTileSize / 2], next[kBinTileSize / 2];
   int pending_count = 0;
-  auto flush = [&](const Pending& p, int cy1) {
+  auto flush = [&](const PendingRun& p, int cy1) {
     TileEdges rect = e;
     rect.x0 = std::max(e.x0, p.cx0 * size);
     rect.x1 = std::min(e.x1, p.cx1 * size + size - 1);
@@ -134,21 +162,7 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
       run_code = code;
       if (code != 0) next[next_count++] = {cx, cx, cy, code};
     }
-    // A run identical to one of the previous row's pending rectangles extends it; pending
-    // rectangles that no run extends are complete.
-    int k = 0;
-    for (int i = 0; i < pending_count; ++i) {
-      const Pending& p = pending[i];
-      while (k < next_count && next[k].cx0 < p.cx0) ++k;
-      if (k < next_count && next[k].cx0 == p.cx0 && next[k].cx1 == p.cx1 &&
-          next[k].code == p.code) {
-        next[k].cy0 = p.cy0;
-      } else {
-        flush(p, cy - 1);
-      }
-    }
-    std::copy(next, next + next_count, pending);
-    pending_count = next_count;
+    cull_detail::extendPendingRuns(pending, pending_count, next, next_count, cy, flush);
   }
   for (int i = 0; i < pending_count; ++i) flush(pending[i], e.y1 >> level);
 }

@@ -2,8 +2,6 @@
 // run time (HWY_DYNAMIC_DISPATCH). Same steps, same operation order, same results.
 #include "raster/tile_kernels.h"
 
-#include <type_traits>
-
 #ifndef PENUMBRA_SCALAR_ONLY
 
 #undef HWY_TARGET_INCLUDE
@@ -77,6 +75,52 @@ void DepthKernelSimd(const TileEdges& e, uint32_t primitive, const DepthTarget& 
   counts.writes += writes;
 }
 
+// One vector of StencilRows' row y from column x, its first `count` lanes in the span: the
+// covered lanes where the depth rule passes on a surface (and, with owners, the pixel is not
+// the owners' own) get the contribution. With kSkip a vector stops as soon as no lane is left
+// to draw; without, it runs branch-free to its (possibly empty) masked store. The constants are
+// set here from their scalars: inlined, they are hoisted out of the rows' loops.
+template <DepthRule kRule, bool kOwned, bool kSkip, class VI, class VF>
+HWY_INLINE void StencilVector(const TileEdges& e, int32_t contribution,
+                              const StencilTarget& target, StencilOwners owners, int y, int x,
+                              size_t count, VI edge0, VI edge1, VI edge2, VF row_depth,
+                              uint64_t& covered, uint64_t& writes) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const hn::RebindToUnsigned<decltype(df)> du;
+  const auto minus_one = hn::Set(di, -1);
+  const size_t at = size_t(y - target.y0) * target.stride + size_t(x - target.x0);
+  // Covered: inside all three edges (>= 0); lanes past the span are off.
+  auto inside_i = hn::And(hn::FirstN(di, count), hn::Gt(edge0, minus_one));
+  inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
+  inside_i = hn::And(inside_i, hn::Gt(edge2, minus_one));
+  if (kSkip && hn::AllFalse(di, inside_i)) return;
+  const auto inside = hn::RebindMask(df, inside_i);
+  covered += hn::CountTrue(df, inside);
+  // Depth rule against the stored depth, only where there is a surface (stored depth > 0).
+  const auto d = hn::Add(row_depth, hn::Mul(hn::Set(df, e.da), hn::Iota(df, float(x - e.tx0))));
+  const auto stored = hn::MaskedLoad(inside, df, target.depth + at);
+  const auto pass = [&] {
+    if constexpr (kRule == DepthRule::Closer) return hn::Gt(d, stored);
+    else return hn::Le(d, stored);
+  }();
+  auto write = hn::And(hn::And(inside, hn::Gt(stored, hn::Zero(df))), pass);
+  if (kSkip && hn::AllFalse(df, write)) return;
+  if constexpr (kOwned) {
+    const auto write_u = hn::RebindMask(du, write);
+    const auto id = hn::MaskedLoad(write_u, du, target.primitive + at);
+    write = hn::RebindMask(df, hn::AndNot(hn::Or(hn::Eq(id, hn::Set(du, owners.first)),
+                                                 hn::Eq(id, hn::Set(du, owners.second))),
+                                          write_u));
+    if (kSkip && hn::AllFalse(df, write)) return;
+  }
+  writes += hn::CountTrue(df, write);
+  // Add the contribution to the stencil where both hold.
+  const auto write_i = hn::RebindMask(di, write);
+  const auto s = hn::MaskedLoad(write_i, di, target.stencil + at);
+  hn::BlendedStore(hn::Add(s, hn::Set(di, contribution)), write_i, di, target.stencil + at);
+}
+
 // StencilKernelSimd with the depth rule and whether there are owners as constants: as run-time
 // values they cost every row of a sliver a test of each (the compiler kept them in memory, and
 // chose the rule's mask by moving both comparisons' masks through general registers).
@@ -85,18 +129,11 @@ HWY_INLINE void StencilRows(const TileEdges& e, int32_t contribution, const Sten
                             KernelCounts& counts, StencilOwners owners) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
-  const hn::RebindToUnsigned<decltype(df)> du;
-  constexpr bool owned = kOwned;
-  constexpr DepthRule rule = kRule;
-  const auto owner0 = hn::Set(du, owners.first), owner1 = hn::Set(du, owners.second);
   const int lanes = int(hn::Lanes(df));
   const auto iota_i = hn::Iota(di, 0);
   const hn::Vec<decltype(di)> lane_step[3] = {hn::Mul(hn::Set(di, e.dx[0]), iota_i),
                                               hn::Mul(hn::Set(di, e.dx[1]), iota_i),
                                               hn::Mul(hn::Set(di, e.dx[2]), iota_i)};
-  const auto add = hn::Set(di, contribution);
-  const auto da = hn::Set(df, e.da);
-  const auto zero = hn::Zero(df);
   const RowSpans spans(e);
   int y_lo, y_hi;
   if (!spans.rows(y_lo, y_hi)) return;
@@ -106,44 +143,6 @@ HWY_INLINE void StencilRows(const TileEdges& e, int32_t contribution, const Sten
   const hn::Vec<decltype(di)> vector_step[3] = {hn::Set(di, e.dx[0] * lanes),
                                                 hn::Set(di, e.dx[1] * lanes),
                                                 hn::Set(di, e.dx[2] * lanes)};
-  const auto minus_one = hn::Set(di, -1);
-  // One vector of row y from column x, its first `count` lanes in the span. With kSkip a
-  // vector stops as soon as no lane is left to draw; without, it runs branch-free to its
-  // (possibly empty) masked store.
-  auto vectorAt = [&](auto skip, int y, int x, size_t count, hn::Vec<decltype(di)> edge0,
-                      hn::Vec<decltype(di)> edge1, hn::Vec<decltype(di)> edge2,
-                      hn::Vec<decltype(df)> row_depth) {
-    constexpr bool kSkip = decltype(skip)::value;
-    const size_t at = size_t(y - target.y0) * target.stride + size_t(x - target.x0);
-    // Covered: inside all three edges (>= 0); lanes past the span are off.
-    auto inside_i = hn::And(hn::FirstN(di, count), hn::Gt(edge0, minus_one));
-    inside_i = hn::And(inside_i, hn::Gt(edge1, minus_one));
-    inside_i = hn::And(inside_i, hn::Gt(edge2, minus_one));
-    if (kSkip && hn::AllFalse(di, inside_i)) return;
-    const auto inside = hn::RebindMask(df, inside_i);
-    covered += hn::CountTrue(df, inside);
-    // Depth rule against the stored depth, only where there is a surface (stored depth > 0).
-    const auto d = hn::Add(row_depth, hn::Mul(da, hn::Iota(df, float(x - e.tx0))));
-    const auto stored = hn::MaskedLoad(inside, df, target.depth + at);
-    const auto pass = [&] {
-      if constexpr (rule == DepthRule::Closer) return hn::Gt(d, stored);
-      else return hn::Le(d, stored);
-    }();
-    auto write = hn::And(hn::And(inside, hn::Gt(stored, zero)), pass);
-    if (kSkip && hn::AllFalse(df, write)) return;
-    if constexpr (owned) {
-      const auto write_u = hn::RebindMask(du, write);
-      const auto id = hn::MaskedLoad(write_u, du, target.primitive + at);
-      write = hn::RebindMask(df, hn::AndNot(hn::Or(hn::Eq(id, owner0), hn::Eq(id, owner1)),
-                                            write_u));
-      if (kSkip && hn::AllFalse(df, write)) return;
-    }
-    writes += hn::CountTrue(df, write);
-    // Add the contribution to the stencil where both hold.
-    const auto write_i = hn::RebindMask(di, write);
-    const auto s = hn::MaskedLoad(write_i, di, target.stencil + at);
-    hn::BlendedStore(hn::Add(s, add), write_i, di, target.stencil + at);
-  };
   // Each row's span, a batch of rows at a time (row_spans_simd-inl.h).
   BatchedRowSpans row_spans(spans, y_lo, y_hi);
   for (int y = y_lo; y <= y_hi; ++y) {
@@ -162,13 +161,16 @@ HWY_INLINE void StencilRows(const TileEdges& e, int32_t contribution, const Sten
       // depth test follows no pattern a branch predictor learns, and masked loads and stores of
       // an empty mask touch nothing. Longer spans skip the vectors with nothing to draw (a big
       // volume polygon's: every span branch-free was slower, bench/README.md).
-      vectorAt(std::false_type(), y, x_lo, size_t(x_hi - x_lo + 1), edge0, edge1, edge2,
-               row_depth);
+      StencilVector<kRule, kOwned, false>(e, contribution, target, owners, y, x_lo,
+                                          size_t(x_hi - x_lo + 1), edge0, edge1, edge2,
+                                          row_depth, covered, writes);
       continue;
     }
     for (int x = x_lo; x <= x_hi; x += lanes, edge0 = hn::Add(edge0, vector_step[0]),
              edge1 = hn::Add(edge1, vector_step[1]), edge2 = hn::Add(edge2, vector_step[2]))
-      vectorAt(std::true_type(), y, x, size_t(x_hi - x + 1), edge0, edge1, edge2, row_depth);
+      StencilVector<kRule, kOwned, true>(e, contribution, target, owners, y, x,
+                                         size_t(x_hi - x + 1), edge0, edge1, edge2, row_depth,
+                                         covered, writes);
   }
   counts.covered += covered;
   counts.writes += writes;

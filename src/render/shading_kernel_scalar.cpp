@@ -86,6 +86,60 @@ void ShadingTriangleTable::build(uint32_t id, ShadingTriangle& t) const {
                    : -1;
 }
 
+namespace {
+
+// Step 2: the shading normal at p. A flat triangle's is n0; otherwise the corner normals are
+// interpolated with barycentrics clamped to the triangle (the unprojected point is on it only
+// up to depth rounding, and a point just outside must not extrapolate), then normalised, which
+// also removes the clamped weights' sum.
+inline vec3 shadingNormal(const ShadingTriangle& t, const vec3& p) {
+  if (t.flat) return t.n0;
+  const vec3 ep(p.x - t.a.x, p.y - t.a.y, p.z - t.a.z);
+  const float v_plane = dot3(ep, t.gv), w_plane = dot3(ep, t.gw);
+  float u = maxZero((1.0f - v_plane) - w_plane);
+  const float v = maxZero(v_plane), w = maxZero(w_plane);
+  if (!((u + v) + w > 0.0f)) u = 1.0f;
+  const vec3 interpolated((u * t.n0.x + v * t.n1.x) + w * t.n2.x,
+                          (u * t.n0.y + v * t.n1.y) + w * t.n2.y,
+                          (u * t.n0.z + v * t.n1.z) + w * t.n2.z);
+  const float length2 = dot3(interpolated, interpolated);
+  if (!(length2 > 1e-20f)) return t.geometric;
+  const float inv_length = 1.0f / std::sqrt(length2);
+  return vec3(interpolated.x * inv_length, interpolated.y * inv_length,
+              interpolated.z * inv_length);
+}
+
+// Step 5 for one light: its diffuse and specular term times its visibility `vis`, added to
+// `color`.
+inline void addShadingLight(const ShadingLight& light, const ShadingTriangle& t, float vis,
+                            const vec3& p, const vec3& n, const vec3& view, vec3& color) {
+  if (!(vis > 0.0f)) return;
+  const vec3 to_light(light.center.x - p.x, light.center.y - p.y, light.center.z - p.z);
+  const float distance2 = dot3(to_light, to_light);
+  const float n_dot_to_light = dot3(n, to_light);
+  // Facing away: neither diffuse nor specular.
+  if (!(distance2 > 0.0f) || !(n_dot_to_light > 0.0f)) return;
+  const float inv_distance = 1.0f / std::sqrt(distance2);
+  const float diffuse = n_dot_to_light * inv_distance;
+  vec3 reflected(t.albedo.x * diffuse, t.albedo.y * diffuse, t.albedo.z * diffuse);
+  if (t.has_specular) {
+    const vec3 h(to_light.x * inv_distance + view.x, to_light.y * inv_distance + view.y,
+                 to_light.z * inv_distance + view.z);
+    const float h_length2 = dot3(h, h);
+    const float n_dot_h =
+        h_length2 > 0.0f ? maxZero(dot3(n, h)) * (1.0f / std::sqrt(h_length2)) : 0.0f;
+    const float power = specularPower(n_dot_h, t);
+    reflected = vec3(reflected.x + t.specular.x * power, reflected.y + t.specular.y * power,
+                     reflected.z + t.specular.z * power);
+  }
+  const float weight = vis < 1.0f ? vis : 1.0f;
+  color = vec3(color.x + (reflected.x * light.radiance.x) * weight,
+               color.y + (reflected.y * light.radiance.y) * weight,
+               color.z + (reflected.z * light.radiance.z) * weight);
+}
+
+}  // namespace
+
 void shadeRowScalar(const ShadingFrame& frame, int y, ShadingTriangleTable& triangles, vec3* out) {
   const size_t row_pixel = size_t(y) * size_t(frame.width);
   const float* depth_row = frame.depth + row_pixel;
@@ -109,28 +163,7 @@ void shadeRowScalar(const ShadingFrame& frame, int y, ShadingTriangleTable& tria
     const float scale = frame.near_plane / depth;
     const vec3 p(frame.eye.x + ray.x * scale, frame.eye.y + ray.y * scale,
                  frame.eye.z + ray.z * scale);
-    // Step 2: the shading normal. A flat triangle's is n0; otherwise the corner normals are
-    // interpolated with barycentrics clamped to the triangle (the unprojected point is on it
-    // only up to depth rounding, and a point just outside must not extrapolate), then
-    // normalised, which also removes the clamped weights' sum.
-    vec3 n = t.n0;
-    if (!t.flat) {
-      const vec3 ep(p.x - t.a.x, p.y - t.a.y, p.z - t.a.z);
-      const float v_plane = dot3(ep, t.gv), w_plane = dot3(ep, t.gw);
-      float u = maxZero((1.0f - v_plane) - w_plane);
-      const float v = maxZero(v_plane), w = maxZero(w_plane);
-      if (!((u + v) + w > 0.0f)) u = 1.0f;
-      const vec3 interpolated((u * t.n0.x + v * t.n1.x) + w * t.n2.x,
-                              (u * t.n0.y + v * t.n1.y) + w * t.n2.y,
-                              (u * t.n0.z + v * t.n1.z) + w * t.n2.z);
-      const float length2 = dot3(interpolated, interpolated);
-      n = t.geometric;
-      if (length2 > 1e-20f) {
-        const float inv_length = 1.0f / std::sqrt(length2);
-        n = vec3(interpolated.x * inv_length, interpolated.y * inv_length,
-                 interpolated.z * inv_length);
-      }
-    }
+    vec3 n = shadingNormal(t, p);
     // Step 3: turn it to the side the eye sees, as the geometric normal decides (an interpolated
     // normal may lean away from the eye near a silhouette of a front face).
     if (dot3(t.geometric, ray) > 0.0f) n = -n;
@@ -144,29 +177,7 @@ void shadeRowScalar(const ShadingFrame& frame, int y, ShadingTriangleTable& tria
     vec3 color = t.ambient;
     for (const ShadingLight& light : frame.lights) {
       const float vis = light.visibility ? light.visibility[row_pixel + size_t(x)] : 1.0f;
-      if (!(vis > 0.0f)) continue;
-      const vec3 to_light(light.center.x - p.x, light.center.y - p.y, light.center.z - p.z);
-      const float distance2 = dot3(to_light, to_light);
-      const float n_dot_to_light = dot3(n, to_light);
-      // Facing away: neither diffuse nor specular.
-      if (!(distance2 > 0.0f) || !(n_dot_to_light > 0.0f)) continue;
-      const float inv_distance = 1.0f / std::sqrt(distance2);
-      const float diffuse = n_dot_to_light * inv_distance;
-      vec3 reflected(t.albedo.x * diffuse, t.albedo.y * diffuse, t.albedo.z * diffuse);
-      if (t.has_specular) {
-        const vec3 h(to_light.x * inv_distance + view.x, to_light.y * inv_distance + view.y,
-                     to_light.z * inv_distance + view.z);
-        const float h_length2 = dot3(h, h);
-        const float n_dot_h =
-            h_length2 > 0.0f ? maxZero(dot3(n, h)) * (1.0f / std::sqrt(h_length2)) : 0.0f;
-        const float power = specularPower(n_dot_h, t);
-        reflected = vec3(reflected.x + t.specular.x * power, reflected.y + t.specular.y * power,
-                         reflected.z + t.specular.z * power);
-      }
-      const float weight = vis < 1.0f ? vis : 1.0f;
-      color = vec3(color.x + (reflected.x * light.radiance.x) * weight,
-                   color.y + (reflected.y * light.radiance.y) * weight,
-                   color.z + (reflected.z * light.radiance.z) * weight);
+      addShadingLight(light, t, vis, p, n, view, color);
     }
     out[x] = color;
   }

@@ -120,6 +120,105 @@ HWY_INLINE VF SpecularPower(VF n_dot_h, const StepTriangles& s, MF needed) {
   return result;
 }
 
+// The triangle records of a step's valid lanes (ShadingTriangleTable::get): the first valid
+// lane's triangle, then the others'.
+HWY_INLINE void GatherStepTriangles(const uint32_t* ids_at, hn::Vec<DU> ids, MF valid,
+                                    ShadingTriangleTable& triangles, StepTriangles& tris) {
+  const DF df;
+  const DU du;
+  auto remaining = hn::RebindMask(du, valid);
+  {
+    const uint32_t id = ids_at[size_t(hn::FindFirstTrue(du, remaining))];
+    tris.first = &triangles.get(id, tris.scratch[0]);
+    tris.others = 0;
+    remaining = hn::AndNot(hn::Eq(ids, hn::Set(du, id)), remaining);
+  }
+  while (!hn::AllFalse(du, remaining)) {
+    const uint32_t id = ids_at[size_t(hn::FindFirstTrue(du, remaining))];
+    const auto same = hn::Eq(ids, hn::Set(du, id));
+    tris.other[tris.others] = &triangles.get(id, tris.scratch[tris.others + 1]);
+    tris.mask[tris.others++] = hn::RebindMask(df, same);
+    remaining = hn::AndNot(same, remaining);
+  }
+}
+
+// Step 2: the shading normal at p. A flat triangle's is n0; otherwise the corner normals are
+// interpolated with barycentrics clamped to the triangle (the unprojected point is on it only
+// up to depth rounding, and a point just outside must not extrapolate), then normalised, which
+// also removes the clamped weights' sum. Lanes: the interpolation is skipped when every valid
+// lane's triangle is flat.
+HWY_INLINE V3 ShadingNormal(const StepTriangles& tris, const V3& p, const V3& n0,
+                            const V3& geometric, MF valid) {
+  const DF df;
+  const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const MF flat = LanesFlag(tris, &ShadingTriangle::flat, valid);
+  if (hn::AllFalse(df, hn::AndNot(flat, valid))) return n0;
+  const V3 a = Lanes3(tris, &ShadingTriangle::a);
+  const V3 ep{hn::Sub(p.x, a.x), hn::Sub(p.y, a.y), hn::Sub(p.z, a.z)};
+  const VF v_plane = Dot3(ep, Lanes3(tris, &ShadingTriangle::gv));
+  const VF w_plane = Dot3(ep, Lanes3(tris, &ShadingTriangle::gw));
+  VF u = hn::Max(hn::Sub(hn::Sub(one, v_plane), w_plane), zero);
+  const VF v = hn::Max(v_plane, zero), w = hn::Max(w_plane, zero);
+  u = hn::IfThenElse(hn::Gt(hn::Add(hn::Add(u, v), w), zero), u, one);
+  const V3 n1 = Lanes3(tris, &ShadingTriangle::n1), n2 = Lanes3(tris, &ShadingTriangle::n2);
+  const V3 interpolated{hn::Add(hn::Add(hn::Mul(u, n0.x), hn::Mul(v, n1.x)), hn::Mul(w, n2.x)),
+                        hn::Add(hn::Add(hn::Mul(u, n0.y), hn::Mul(v, n1.y)), hn::Mul(w, n2.y)),
+                        hn::Add(hn::Add(hn::Mul(u, n0.z), hn::Mul(v, n1.z)), hn::Mul(w, n2.z))};
+  const VF length2 = Dot3(interpolated, interpolated);
+  const VF inv_length = hn::Div(one, hn::Sqrt(length2));
+  const V3 smooth = Select3(
+      hn::Gt(length2, hn::Set(df, 1e-20f)),
+      V3{hn::Mul(interpolated.x, inv_length), hn::Mul(interpolated.y, inv_length),
+         hn::Mul(interpolated.z, inv_length)},
+      geometric);
+  return Select3(flat, n0, smooth);
+}
+
+// Step 5 for one light: its diffuse and specular term times its visibility `vis`, added to
+// `lit` in the lanes it reaches.
+HWY_INLINE void AddShadingLight(const ShadingLight& light, const StepTriangles& tris, VF vis,
+                                const V3& p, const V3& n, const V3& view, const V3& albedo,
+                                MF valid, MF specular, V3& lit) {
+  const DF df;
+  const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const V3 center = Set3(light.center);
+  const V3 to_light{hn::Sub(center.x, p.x), hn::Sub(center.y, p.y), hn::Sub(center.z, p.z)};
+  const VF distance2 = Dot3(to_light, to_light);
+  const VF n_dot_to_light = Dot3(n, to_light);
+  // Facing away: neither diffuse nor specular.
+  const MF facing = hn::And(hn::Gt(distance2, zero), hn::Gt(n_dot_to_light, zero));
+  const MF lit_lanes = hn::And(hn::And(valid, hn::Gt(vis, zero)), facing);
+  if (hn::AllFalse(df, lit_lanes)) return;
+  const VF inv_distance = hn::Div(one, hn::Sqrt(distance2));
+  const VF diffuse = hn::Mul(n_dot_to_light, inv_distance);
+  V3 reflected{hn::Mul(albedo.x, diffuse), hn::Mul(albedo.y, diffuse),
+               hn::Mul(albedo.z, diffuse)};
+  const MF specular_lanes = hn::And(specular, lit_lanes);
+  if (!hn::AllFalse(df, specular_lanes)) {
+    const V3 h{hn::Add(hn::Mul(to_light.x, inv_distance), view.x),
+               hn::Add(hn::Mul(to_light.y, inv_distance), view.y),
+               hn::Add(hn::Mul(to_light.z, inv_distance), view.z)};
+    const VF h_length2 = Dot3(h, h);
+    const VF n_dot_h = hn::IfThenElseZero(
+        hn::Gt(h_length2, zero),
+        hn::Mul(hn::Max(Dot3(n, h), zero), hn::Div(one, hn::Sqrt(h_length2))));
+    const VF power = SpecularPower(n_dot_h, tris, specular_lanes);
+    const V3 specular_color = Lanes3(tris, &ShadingTriangle::specular);
+    reflected = Select3(specular_lanes,
+                        V3{hn::Add(reflected.x, hn::Mul(specular_color.x, power)),
+                           hn::Add(reflected.y, hn::Mul(specular_color.y, power)),
+                           hn::Add(reflected.z, hn::Mul(specular_color.z, power))},
+                        reflected);
+  }
+  const VF weight = hn::Min(vis, one);
+  const V3 radiance = Set3(light.radiance);
+  lit = Select3(lit_lanes,
+                V3{hn::Add(lit.x, hn::Mul(hn::Mul(reflected.x, radiance.x), weight)),
+                   hn::Add(lit.y, hn::Mul(hn::Mul(reflected.y, radiance.y), weight)),
+                   hn::Add(lit.z, hn::Mul(hn::Mul(reflected.z, radiance.z), weight))},
+                lit);
+}
+
 void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triangles, vec3* out) {
   const DF df;
   const DU du;
@@ -153,22 +252,7 @@ void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triang
     const MF valid = hn::And(hn::RebindMask(df, valid_u), hn::Gt(depth, zero));
     V3 color = background;
     if (!hn::AllFalse(df, valid)) {
-      // The pixel's triangle record (ShadingTriangleTable::get). Lanes: the first valid
-      // lane's triangle, then the others'.
-      auto remaining = hn::RebindMask(du, valid);
-      {
-        const uint32_t id = id_row[x + size_t(hn::FindFirstTrue(du, remaining))];
-        tris.first = &triangles.get(id, tris.scratch[0]);
-        tris.others = 0;
-        remaining = hn::AndNot(hn::Eq(ids, hn::Set(du, id)), remaining);
-      }
-      while (!hn::AllFalse(du, remaining)) {
-        const uint32_t id = id_row[x + size_t(hn::FindFirstTrue(du, remaining))];
-        const auto same = hn::Eq(ids, hn::Set(du, id));
-        tris.other[tris.others] = &triangles.get(id, tris.scratch[tris.others + 1]);
-        tris.mask[tris.others++] = hn::RebindMask(df, same);
-        remaining = hn::AndNot(same, remaining);
-      }
+      GatherStepTriangles(id_row + x, ids, valid, triangles, tris);
       // Step 1: the view ray and the visible point on it.
       const VF fx = hn::Add(hn::Iota(df, float(x)), half);
       const V3 ray{hn::Add(row_ray_v.x, hn::Mul(ray_dx.x, fx)),
@@ -177,37 +261,8 @@ void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triang
       const VF scale = hn::Div(near_plane, depth);
       const V3 p{hn::Add(eye.x, hn::Mul(ray.x, scale)), hn::Add(eye.y, hn::Mul(ray.y, scale)),
                  hn::Add(eye.z, hn::Mul(ray.z, scale))};
-      // Step 2: the shading normal. A flat triangle's is n0; otherwise the corner normals are
-      // interpolated with barycentrics clamped to the triangle (the unprojected point is on it
-      // only up to depth rounding, and a point just outside must not extrapolate), then
-      // normalised, which also removes the clamped weights' sum. Lanes: the interpolation is
-      // skipped when every valid lane's triangle is flat.
-      const V3 n0 = Lanes3(tris, &ShadingTriangle::n0);
       const V3 geometric = Lanes3(tris, &ShadingTriangle::geometric);
-      V3 n = n0;
-      const MF flat = LanesFlag(tris, &ShadingTriangle::flat, valid);
-      if (!hn::AllFalse(df, hn::AndNot(flat, valid))) {
-        const V3 a = Lanes3(tris, &ShadingTriangle::a);
-        const V3 ep{hn::Sub(p.x, a.x), hn::Sub(p.y, a.y), hn::Sub(p.z, a.z)};
-        const VF v_plane = Dot3(ep, Lanes3(tris, &ShadingTriangle::gv));
-        const VF w_plane = Dot3(ep, Lanes3(tris, &ShadingTriangle::gw));
-        VF u = hn::Max(hn::Sub(hn::Sub(one, v_plane), w_plane), zero);
-        const VF v = hn::Max(v_plane, zero), w = hn::Max(w_plane, zero);
-        u = hn::IfThenElse(hn::Gt(hn::Add(hn::Add(u, v), w), zero), u, one);
-        const V3 n1 = Lanes3(tris, &ShadingTriangle::n1), n2 = Lanes3(tris, &ShadingTriangle::n2);
-        const V3 interpolated{
-            hn::Add(hn::Add(hn::Mul(u, n0.x), hn::Mul(v, n1.x)), hn::Mul(w, n2.x)),
-            hn::Add(hn::Add(hn::Mul(u, n0.y), hn::Mul(v, n1.y)), hn::Mul(w, n2.y)),
-            hn::Add(hn::Add(hn::Mul(u, n0.z), hn::Mul(v, n1.z)), hn::Mul(w, n2.z))};
-        const VF length2 = Dot3(interpolated, interpolated);
-        const VF inv_length = hn::Div(one, hn::Sqrt(length2));
-        const V3 smooth = Select3(
-            hn::Gt(length2, hn::Set(df, 1e-20f)),
-            V3{hn::Mul(interpolated.x, inv_length), hn::Mul(interpolated.y, inv_length),
-               hn::Mul(interpolated.z, inv_length)},
-            geometric);
-        n = Select3(flat, n0, smooth);
-      }
+      V3 n = ShadingNormal(tris, p, Lanes3(tris, &ShadingTriangle::n0), geometric, valid);
       // Step 3: turn it to the side the eye sees, as the geometric normal decides (an
       // interpolated normal may lean away from the eye near a silhouette of a front face).
       const V3 flipped{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)};
@@ -227,42 +282,7 @@ void ShadeRowSimd(const ShadingFrame& frame, int y, ShadingTriangleTable& triang
         const VF vis = light.visibility
                            ? hn::MaskedLoad(valid, df, light.visibility + row_pixel + x)
                            : one;
-        const V3 center = Set3(light.center);
-        const V3 to_light{hn::Sub(center.x, p.x), hn::Sub(center.y, p.y), hn::Sub(center.z, p.z)};
-        const VF distance2 = Dot3(to_light, to_light);
-        const VF n_dot_to_light = Dot3(n, to_light);
-        // Facing away: neither diffuse nor specular.
-        const MF facing = hn::And(hn::Gt(distance2, zero), hn::Gt(n_dot_to_light, zero));
-        const MF lit_lanes = hn::And(hn::And(valid, hn::Gt(vis, zero)), facing);
-        if (hn::AllFalse(df, lit_lanes)) continue;
-        const VF inv_distance = hn::Div(one, hn::Sqrt(distance2));
-        const VF diffuse = hn::Mul(n_dot_to_light, inv_distance);
-        V3 reflected{hn::Mul(albedo.x, diffuse), hn::Mul(albedo.y, diffuse),
-                     hn::Mul(albedo.z, diffuse)};
-        const MF specular_lanes = hn::And(specular, lit_lanes);
-        if (!hn::AllFalse(df, specular_lanes)) {
-          const V3 h{hn::Add(hn::Mul(to_light.x, inv_distance), view.x),
-                     hn::Add(hn::Mul(to_light.y, inv_distance), view.y),
-                     hn::Add(hn::Mul(to_light.z, inv_distance), view.z)};
-          const VF h_length2 = Dot3(h, h);
-          const VF n_dot_h = hn::IfThenElseZero(
-              hn::Gt(h_length2, zero),
-              hn::Mul(hn::Max(Dot3(n, h), zero), hn::Div(one, hn::Sqrt(h_length2))));
-          const VF power = SpecularPower(n_dot_h, tris, specular_lanes);
-          const V3 specular_color = Lanes3(tris, &ShadingTriangle::specular);
-          reflected = Select3(specular_lanes,
-                              V3{hn::Add(reflected.x, hn::Mul(specular_color.x, power)),
-                                 hn::Add(reflected.y, hn::Mul(specular_color.y, power)),
-                                 hn::Add(reflected.z, hn::Mul(specular_color.z, power))},
-                              reflected);
-        }
-        const VF weight = hn::Min(vis, one);
-        const V3 radiance = Set3(light.radiance);
-        lit = Select3(lit_lanes,
-                      V3{hn::Add(lit.x, hn::Mul(hn::Mul(reflected.x, radiance.x), weight)),
-                         hn::Add(lit.y, hn::Mul(hn::Mul(reflected.y, radiance.y), weight)),
-                         hn::Add(lit.z, hn::Mul(hn::Mul(reflected.z, radiance.z), weight))},
-                      lit);
+        AddShadingLight(light, tris, vis, p, n, view, albedo, valid, specular, lit);
       }
       color = Select3(valid, lit, background);
     }

@@ -116,27 +116,7 @@ class PlyChecker {
     bool have_format = false;
     bool first = true;
     while (true) {
-      if (pos >= bytes_.size() || pos > kMaxHeaderBytes) {
-        fail("the header has no end_header line{}",
-             pos > kMaxHeaderBytes ? fmt::format(" in its first {} bytes", kMaxHeaderBytes)
-                                   : std::string(" (the file ends first)"));
-      }
-      const size_t end = bytes_.find('\n', pos);
-      if (end == std::string_view::npos) {
-        fail("the header has no end_header line (the file ends first)");
-      }
-      const std::string_view line = bytes_.substr(pos, end - pos);
-      pos = end + 1;
-      ++line_number;
-      // assimp stops reading a header line at a NUL and reads other control bytes as part of
-      // a word: refuse them rather than disagree with it about what the header says.
-      for (char c : line) {
-        const auto u = static_cast<unsigned char>(c);
-        if ((u < 0x20 && c != '\t' && c != '\r') || u == 0x7f) {
-          fail("header line {} holds the control byte 0x{:02x}", line_number, unsigned(u));
-        }
-      }
-      const std::vector<std::string_view> words = splitWords(line);
+      const std::vector<std::string_view> words = splitWords(nextHeaderLine(pos, line_number));
       if (first) {
         if (words.size() != 1 || words[0] != "ply") fail("the file does not start with 'ply'");
         first = false;
@@ -153,36 +133,13 @@ class PlyChecker {
       }
       if (keyword == "format") {
         if (have_format) fail("header line {}: a second format line", line_number);
-        if (words.size() != 3) fail("header line {}: expected 'format TYPE 1.0'", line_number);
-        if (words[1] == "ascii") {
-          format_ = Format::Ascii;
-        } else if (words[1] == "binary_little_endian") {
-          format_ = Format::BinaryLittle;
-        } else if (words[1] == "binary_big_endian") {
-          format_ = Format::BinaryBig;
-        } else {
-          fail("header line {}: unknown format '{}'", line_number, words[1]);
-        }
+        readFormat(words, line_number);
         have_format = true;
         continue;
       }
       if (keyword == "element") {
         if (!have_format) fail("header line {}: element before the format line", line_number);
-        uint64_t count = 0;
-        if (words.size() != 3 || !parseUnsigned(words[2], count)) {
-          fail("header line {}: expected 'element NAME COUNT' with COUNT >= 0", line_number);
-        }
-        if (count > kMaxElementCount) {
-          fail("header line {}: element '{}' declares {} items (the limit is {})", line_number,
-               words[1], count, kMaxElementCount);
-        }
-        if (std::isdigit(static_cast<unsigned char>(words[1][0]))) {
-          // assimp 5.2 reads the count of an element whose name it does not know from the
-          // name itself: "element 66face 2" would be 66 items to it (or billions, and an
-          // allocation of that size).
-          fail("header line {}: element name '{}' starts with a digit", line_number, words[1]);
-        }
-        elements_.push_back(Element{std::string(words[1]), count, {}});
+        readElement(words, line_number);
         continue;
       }
       if (keyword == "property") {
@@ -192,6 +149,64 @@ class PlyChecker {
       }
       fail("header line {}: unknown keyword '{}'", line_number, keyword);
     }
+  }
+
+  // The header line from `pos` (then moved past it), numbered `line_number` (then counted).
+  std::string_view nextHeaderLine(size_t& pos, int& line_number) const {
+    if (pos >= bytes_.size() || pos > kMaxHeaderBytes) {
+      fail("the header has no end_header line{}",
+           pos > kMaxHeaderBytes ? fmt::format(" in its first {} bytes", kMaxHeaderBytes)
+                                 : std::string(" (the file ends first)"));
+    }
+    const size_t end = bytes_.find('\n', pos);
+    if (end == std::string_view::npos) {
+      fail("the header has no end_header line (the file ends first)");
+    }
+    const std::string_view line = bytes_.substr(pos, end - pos);
+    pos = end + 1;
+    ++line_number;
+    // assimp stops reading a header line at a NUL and reads other control bytes as part of
+    // a word: refuse them rather than disagree with it about what the header says.
+    for (char c : line) {
+      const auto u = static_cast<unsigned char>(c);
+      if ((u < 0x20 && c != '\t' && c != '\r') || u == 0x7f) {
+        fail("header line {} holds the control byte 0x{:02x}", line_number, unsigned(u));
+      }
+    }
+    return line;
+  }
+
+  // "format TYPE 1.0".
+  void readFormat(const std::vector<std::string_view>& words, int line_number) {
+    if (words.size() != 3) fail("header line {}: expected 'format TYPE 1.0'", line_number);
+    if (words[1] == "ascii") {
+      format_ = Format::Ascii;
+    } else if (words[1] == "binary_little_endian") {
+      format_ = Format::BinaryLittle;
+    } else if (words[1] == "binary_big_endian") {
+      format_ = Format::BinaryBig;
+    } else {
+      fail("header line {}: unknown format '{}'", line_number, words[1]);
+    }
+  }
+
+  // "element NAME COUNT".
+  void readElement(const std::vector<std::string_view>& words, int line_number) {
+    uint64_t count = 0;
+    if (words.size() != 3 || !parseUnsigned(words[2], count)) {
+      fail("header line {}: expected 'element NAME COUNT' with COUNT >= 0", line_number);
+    }
+    if (count > kMaxElementCount) {
+      fail("header line {}: element '{}' declares {} items (the limit is {})", line_number,
+           words[1], count, kMaxElementCount);
+    }
+    if (std::isdigit(static_cast<unsigned char>(words[1][0]))) {
+      // assimp 5.2 reads the count of an element whose name it does not know from the
+      // name itself: "element 66face 2" would be 66 items to it (or billions, and an
+      // allocation of that size).
+      fail("header line {}: element name '{}' starts with a digit", line_number, words[1]);
+    }
+    elements_.push_back(Element{std::string(words[1]), count, {}});
   }
 
   // assimp 5.2 takes the count of an element whose name it does not know (anything but

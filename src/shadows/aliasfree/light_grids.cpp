@@ -59,47 +59,109 @@ int tileIndex(double value, double lo, double hi, int count) {
   return std::clamp(int(std::floor(t)), 0, count - 1);
 }
 
+// Calls body(chunk, i) for every sample i, in fixed chunks of kChunk in parallel; sums kept
+// per chunk and added chunk by chunk in order do not depend on the thread count.
+template <class Body>
+void forEachSampleChunked(size_t samples, const Body& body) {
+  const size_t chunks = (samples + kChunk - 1) / kChunk;
+  parallelFor(chunks, [&](size_t chunk) {
+    const size_t end = std::min(samples, (chunk + 1) * kChunk);
+    for (size_t i = chunk * kChunk; i < end; ++i) body(chunk, i);
+  });
+}
+
+// True when one frustum around the samples' mean direction holds them all (no sample more
+// than kSingleFrustumHalfAngleDegrees from it); `mean` is then its unit axis.
+bool fitsSingleFrustum(const std::vector<dvec3>& d, dvec3& mean) {
+  const size_t chunks = (d.size() + kChunk - 1) / kChunk;
+  std::vector<dvec3> chunk_sum(chunks, dvec3(0.0));
+  forEachSampleChunked(d.size(),
+                       [&](size_t chunk, size_t i) { chunk_sum[chunk] += glm::normalize(d[i]); });
+  mean = dvec3(0.0);
+  for (const dvec3& sum : chunk_sum) mean += sum;
+  const double cos_limit = std::cos(glm::radians(kSingleFrustumHalfAngleDegrees));
+  if (!(!d.empty() && glm::length(mean) > 0.0)) return false;
+  mean = glm::normalize(mean);
+  std::vector<uint8_t> chunk_outside(chunks, 0);
+  forEachSampleChunked(d.size(), [&](size_t chunk, size_t i) {
+    if (!(glm::dot(d[i], mean) >= cos_limit * glm::length(d[i]))) chunk_outside[chunk] = 1;
+  });
+  return std::find(chunk_outside.begin(), chunk_outside.end(), 1) == chunk_outside.end();
+}
+
+// The frustum grid around unit axis `mean`: any u perpendicular to the axis, the world axis
+// least aligned with it made orthogonal.
+LightGrid frustumAround(const dvec3& mean) {
+  LightGrid g;
+  g.axis = mean;
+  const dvec3 a = glm::abs(mean);
+  const dvec3 helper = a.x <= a.y && a.x <= a.z ? dvec3(1, 0, 0)
+                       : a.y <= a.z            ? dvec3(0, 1, 0)
+                                               : dvec3(0, 0, 1);
+  g.u = glm::normalize(glm::cross(helper, mean));
+  g.v = glm::cross(mean, g.u);
+  return g;
+}
+
+// Grid g's rectangle from its samples' bounds [low, high], padded, and its tiles: about
+// samples / tile_samples, as square as the rectangle allows, numbered from *tile_count on.
+void sizeGrid(LightGrid& g, const dvec2& low, const dvec2& high, int tile_samples,
+              size_t& tile_count) {
+  g.first_tile = tile_count;
+  if (g.samples == 0) {
+    g.u0 = g.v0 = -1.0;
+    g.u1 = g.v1 = 1.0;
+    tile_count += 1;
+    return;
+  }
+  const double pad = kRelativePad * std::max(high.x - low.x, high.y - low.y) + kAbsolutePad;
+  g.u0 = low.x - pad;
+  g.v0 = low.y - pad;
+  g.u1 = high.x + pad;
+  g.v1 = high.y + pad;
+  const double tiles = std::max(1.0, double(g.samples) / double(tile_samples));
+  const double aspect = (g.u1 - g.u0) / (g.v1 - g.v0);
+  g.columns = std::clamp(int(std::lround(std::sqrt(tiles * aspect))), 1, kMaxGridSide);
+  g.rows = std::clamp(int(std::lround(tiles / g.columns)), 1, kMaxGridSide);
+  tile_count += size_t(g.columns) * size_t(g.rows);
+}
+
+// Each grid spans its samples' bounds, padded; empty grids keep one tile and no samples.
+void fitGrids(const std::vector<dvec3>& d, const std::vector<uint8_t>& grid_of,
+              int tile_samples, std::vector<LightGrid>& grids, size_t& tile_count) {
+  const size_t chunks = (d.size() + kChunk - 1) / kChunk;
+  const size_t n_grids = grids.size();
+  std::vector<dvec2> lo(chunks * n_grids, dvec2(HUGE_VAL)), hi(chunks * n_grids, dvec2(-HUGE_VAL));
+  std::vector<size_t> count(chunks * n_grids, 0);
+  forEachSampleChunked(d.size(), [&](size_t chunk, size_t i) {
+    const size_t k = chunk * n_grids + grid_of[i];
+    const dvec2 uv = project(grids[grid_of[i]], d[i]);
+    lo[k] = glm::min(lo[k], uv);
+    hi[k] = glm::max(hi[k], uv);
+    ++count[k];
+  });
+  for (size_t k = 0; k < n_grids; ++k) {
+    LightGrid& g = grids[k];
+    dvec2 low(HUGE_VAL), high(-HUGE_VAL);
+    for (size_t chunk = 0; chunk < chunks; ++chunk) {
+      low = glm::min(low, lo[chunk * n_grids + k]);
+      high = glm::max(high, hi[chunk * n_grids + k]);
+      g.samples += count[chunk * n_grids + k];
+    }
+    sizeGrid(g, low, high, tile_samples, tile_count);
+  }
+}
+
 }  // namespace
 
+// The light's image plane of the irregular z-buffer (thesis section 4.1): one frustum, or six
+// cube faces, sized to the samples; every sample's tile.
 LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
   sample_tile_.resize(d.size());
   std::vector<uint8_t> grid_of(d.size(), 0);
-  // Per-sample work in fixed chunks, in parallel; sums are added chunk by chunk in order, so
-  // the grids do not depend on the thread count.
-  const size_t chunks = (d.size() + kChunk - 1) / kChunk;
-  const auto chunked = [&](const auto& body) {
-    parallelFor(chunks, [&](size_t chunk) {
-      const size_t end = std::min(d.size(), (chunk + 1) * kChunk);
-      for (size_t i = chunk * kChunk; i < end; ++i) body(chunk, i);
-    });
-  };
-
-  // One frustum around the samples' mean direction when they all fit in it.
-  std::vector<dvec3> chunk_sum(chunks, dvec3(0.0));
-  chunked([&](size_t chunk, size_t i) { chunk_sum[chunk] += glm::normalize(d[i]); });
-  dvec3 mean(0.0);
-  for (const dvec3& sum : chunk_sum) mean += sum;
-  const double cos_limit = std::cos(glm::radians(kSingleFrustumHalfAngleDegrees));
-  bool single = !d.empty() && glm::length(mean) > 0.0;
-  if (single) {
-    mean = glm::normalize(mean);
-    std::vector<uint8_t> chunk_outside(chunks, 0);
-    chunked([&](size_t chunk, size_t i) {
-      if (!(glm::dot(d[i], mean) >= cos_limit * glm::length(d[i]))) chunk_outside[chunk] = 1;
-    });
-    single = std::find(chunk_outside.begin(), chunk_outside.end(), 1) == chunk_outside.end();
-  }
-  if (single) {
-    LightGrid g;
-    g.axis = mean;
-    // Any u perpendicular to the axis: the world axis least aligned with it, made orthogonal.
-    const dvec3 a = glm::abs(mean);
-    const dvec3 helper = a.x <= a.y && a.x <= a.z ? dvec3(1, 0, 0)
-                         : a.y <= a.z            ? dvec3(0, 1, 0)
-                                                 : dvec3(0, 0, 1);
-    g.u = glm::normalize(glm::cross(helper, mean));
-    g.v = glm::cross(mean, g.u);
-    grids_.push_back(g);
+  dvec3 mean;
+  if (fitsSingleFrustum(d, mean)) {
+    grids_.push_back(frustumAround(mean));
   } else {
     for (const CubeFace& f : kCubeFaces) {
       LightGrid g;
@@ -108,48 +170,11 @@ LightGrids::LightGrids(const std::vector<dvec3>& d, int tile_samples) {
       g.v = f.v;
       grids_.push_back(g);
     }
-    chunked([&](size_t, size_t i) { grid_of[i] = uint8_t(majorFace(d[i])); });
+    forEachSampleChunked(d.size(),
+                         [&](size_t, size_t i) { grid_of[i] = uint8_t(majorFace(d[i])); });
   }
-
-  // Each grid spans its samples' bounds, padded; empty grids keep one tile and no samples.
-  const size_t n_grids = grids_.size();
-  std::vector<dvec2> lo(chunks * n_grids, dvec2(HUGE_VAL)), hi(chunks * n_grids, dvec2(-HUGE_VAL));
-  std::vector<size_t> count(chunks * n_grids, 0);
-  chunked([&](size_t chunk, size_t i) {
-    const size_t k = chunk * n_grids + grid_of[i];
-    const dvec2 uv = project(grids_[grid_of[i]], d[i]);
-    lo[k] = glm::min(lo[k], uv);
-    hi[k] = glm::max(hi[k], uv);
-    ++count[k];
-  });
-  for (size_t k = 0; k < n_grids; ++k) {
-    LightGrid& g = grids_[k];
-    dvec2 low(HUGE_VAL), high(-HUGE_VAL);
-    for (size_t chunk = 0; chunk < chunks; ++chunk) {
-      low = glm::min(low, lo[chunk * n_grids + k]);
-      high = glm::max(high, hi[chunk * n_grids + k]);
-      g.samples += count[chunk * n_grids + k];
-    }
-    g.first_tile = tile_count_;
-    if (g.samples == 0) {
-      g.u0 = g.v0 = -1.0;
-      g.u1 = g.v1 = 1.0;
-      tile_count_ += 1;
-      continue;
-    }
-    const double pad = kRelativePad * std::max(high.x - low.x, high.y - low.y) + kAbsolutePad;
-    g.u0 = low.x - pad;
-    g.v0 = low.y - pad;
-    g.u1 = high.x + pad;
-    g.v1 = high.y + pad;
-    // About samples / tile_samples tiles, as square as the rectangle allows.
-    const double tiles = std::max(1.0, double(g.samples) / double(tile_samples));
-    const double aspect = (g.u1 - g.u0) / (g.v1 - g.v0);
-    g.columns = std::clamp(int(std::lround(std::sqrt(tiles * aspect))), 1, kMaxGridSide);
-    g.rows = std::clamp(int(std::lround(tiles / g.columns)), 1, kMaxGridSide);
-    tile_count_ += size_t(g.columns) * size_t(g.rows);
-  }
-  chunked([&](size_t, size_t i) {
+  fitGrids(d, grid_of, tile_samples, grids_, tile_count_);
+  forEachSampleChunked(d.size(), [&](size_t, size_t i) {
     // Projected again rather than kept: the same operations give the same bits.
     const LightGrid& g = grids_[grid_of[i]];
     const dvec2 uv = project(g, d[i]);

@@ -165,6 +165,335 @@ dvec3 triangleNormalTowardEye(const Scene& scene, uint32_t id, const View& view)
   return (glm::dot(n, dvec3(view.eye) - a) < 0.0 ? -n : n) / length;
 }
 
+// What one render's coverage passes share: the frame, the light's coverage table (null:
+// analytic) and texture (null: untextured).
+struct CoverageFrame {
+  const Scene& scene;
+  const Light& light;
+  const View& view;
+  const EyeBuffers& eye;
+  const CoverageOptions& options;
+  const CoverageTableData* table;
+  const TexturedSquare* texture;
+  bool simd;
+};
+
+// Visibility pass 2 (Funk 2004, section 2.1.3) over the edge bins' tiles, in blocks of
+// kBlockPixels pixels: each pixel starts from pass 1's hard value (section 2.1.2, the
+// stencil), and every edge whose region holds it adds its signed coverage of the light.
+class CoverageTileRender {
+ public:
+  CoverageTileRender(const CoverageFrame& frame, const Image<int32_t>& stencil,
+                     const CoverageEdges& edges, const EdgeBins& bins, CoverageImages& images)
+      : f_(frame), eye_(frame.eye), stencil_(stencil), edges_(edges), bins_(bins),
+        images_(images), away_(frame.scene, frame.light, frame.view), unproject_(frame.view),
+        edge_v_(frame.light.edge_v), textured_(frame.texture != nullptr),
+        // The own plane's cut terms: analytic lights only (the table has no half-plane).
+        cut_terms_(frame.table == nullptr) {}
+
+  void renderTile(size_t index, CoverageScratch& s, CoverageTileWork& work) const {
+    const EdgeBinTile bin =
+        edgeBinTile(bins_, index, eye_.depth.width(), eye_.depth.height());
+    // No edge reaches the tile (most of a frame's tiles): the hard value is the answer unless
+    // a pixel's own plane cuts the light, and only then is the tile set up below.
+    if (bin.begin == bin.end && !writeHardTile(bin)) return;
+    int x = bin.x0, y = bin.y0;
+    while (y < bin.y1) {
+      const uint64_t cut = gatherBlock(bin, x, y, s);
+      if (s.block.active == 0) continue;
+      // The edges' candidate pixels first, then every basis the block needs in one loop
+      // (independent iterations: the square roots and divisions of one pixel's basis overlap
+      // the next one's), then the pairs.
+      const uint64_t reached = findCandidates(bin, s, work);
+      const uint64_t framed = frameBases((reached | cut) & s.block.active, s, work);
+      cutByOwnPlane(framed & cut, s);
+      const size_t n = gatherPairs(bin, framed, s, work);
+      edgeCoverage(s.batch, n);
+      sumEdgeTerms(s, n, work);
+      writeVisibility(framed, s);
+    }
+  }
+
+ private:
+  // Pass 1's answer at a pixel (section 2.1.2): lit where no hard volume holds it.
+  void writeHard(int px, int py, int32_t count) const {
+    const float hard_visibility = count == 0 ? 1.0f : 0.0f;
+    if (textured_) {
+      for (Image<float>& c : images_.rgb) c.at(px, py) = hard_visibility;
+    } else {
+      images_.grey.at(px, py) = hard_visibility;
+    }
+  }
+
+  // A tile no edge reaches: the hard values written; true when some pixel's own plane cuts
+  // the light, so that the tile is still rendered per pixel.
+  bool writeHardTile(const EdgeBinTile& bin) const {
+    bool any_cut = false;
+    for (int py = bin.y0; py < bin.y1; ++py) {
+      for (int px = bin.x0; px < bin.x1; ++px) {
+        writeHard(px, py, stencil_.at(px, py));
+        const uint32_t id = eye_.primitive.at(px, py);
+        any_cut |= id != kNoPrimitive && eye_.depth.depth.at(px, py) > 0.0f && !away_(id) &&
+                   !away_.clearOfLight(id);
+      }
+    }
+    return any_cut;
+  }
+
+  // The next block of the tile's pixels from (x, y), in rows (x and y advanced past it): their
+  // hard values written and kept, the points facing the light made active. Returns the pixels
+  // whose own plane cuts the light.
+  uint64_t gatherBlock(const EdgeBinTile& bin, int& x, int& y, CoverageScratch& s) const {
+    PixelBlock& block = s.block;
+    block.active = 0;
+    uint64_t cut = 0;
+    int used = 0;
+    for (; y < bin.y1 && used < kBlockPixels;
+         x = (x + 1 < bin.x1) ? x + 1 : bin.x0, y += (x == bin.x0)) {
+      const int i = used++;
+      s.px[i] = x;
+      s.py[i] = y;
+      block.sx[i] = float(x) + 0.5f;
+      block.sy[i] = float(y) + 0.5f;
+      block.z[i] = eye_.depth.depth.at(x, y);
+      const int32_t count = stencil_.at(x, y);
+      writeHard(x, y, count);
+      s.hard[i] = 1.0f - float(count);
+      const uint32_t id = eye_.primitive.at(x, y);
+      if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away_(id)) continue;
+      block.active |= uint64_t(1) << i;
+      s.framed[i] = false;
+      s.sum[i] = 0.0f;
+      s.own_plane[i] = 1.0f;
+      if (textured_) {
+        s.sum_rgb[i] = dvec3(0.0);
+        s.own_rgb[i] = dvec3(1.0);
+      }
+      // The visible triangle's plane cuts the light: the part behind it is blocked by the
+      // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is),
+      // so the point needs its basis whether an edge reaches it or not.
+      if (!away_.clearOfLight(id)) cut |= uint64_t(1) << i;
+    }
+    for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
+    return cut;
+  }
+
+  // Per edge of the tile's bin, the block's pixels inside its region of influence (section
+  // 2.1.3: only those get the edge's term); returns them all.
+  uint64_t findCandidates(const EdgeBinTile& bin, CoverageScratch& s,
+                          CoverageTileWork& work) const {
+    s.candidates.clear();
+    uint64_t reached = 0;
+    for (const uint32_t* it = bin.begin; it != bin.end; ++it) {
+      work.tests += uint64_t(__builtin_popcountll(s.block.active));
+      const uint64_t mask = edgeCandidates(bins_.tests[*it], s.block, f_.simd);
+      s.candidates.push_back(mask);
+      reached |= mask;
+    }
+    return reached;
+  }
+
+  // The light's local basis at each pixel in `todo` (coverage_basis.h); returns those framed.
+  uint64_t frameBases(uint64_t todo, CoverageScratch& s, CoverageTileWork& work) const {
+    uint64_t framed = todo;
+    for (; todo != 0; todo &= todo - 1) {
+      const int i = __builtin_ctzll(todo);
+      s.framed[i] = true;
+      ++work.reads;
+      const dvec3 p = unproject_(s.px[i], s.py[i], s.block.z[i]);
+      if (!coverageBasis(f_.light, p, s.bases[i])) {
+        framed &= ~(uint64_t(1) << i);
+        continue;
+      }
+      s.flip[i] = glm::dot(s.bases[i].b, edge_v_) < 0.0;
+    }
+    return framed;
+  }
+
+  // The fraction of the light in front of each pixel's own plane, for the pixels `todo` whose
+  // plane cuts it.
+  void cutByOwnPlane(uint64_t todo, CoverageScratch& s) const {
+    for (; todo != 0; todo &= todo - 1) {
+      const int i = __builtin_ctzll(todo);
+      const uint32_t id = eye_.primitive.at(s.px[i], s.py[i]);
+      const dvec3 normal = triangleNormalTowardEye(f_.scene, id, f_.view);
+      if (normal == dvec3(0.0)) continue;
+      frontHalfPlane(s.bases[i], normal, s.plane_slope[i], s.plane_offset[i]);
+      s.own_plane[i] =
+          float(halfPlaneFraction(s.bases[i].outline, s.plane_slope[i], s.plane_offset[i]));
+      if (textured_ && s.own_plane[i] < 1.0f) {
+        s.own_rgb[i] =
+            f_.texture->halfPlaneFraction(s.plane_slope[i], s.plane_offset[i], s.flip[i]);
+      }
+    }
+  }
+
+  // The block's (pixel, edge) pairs, the edge's end points in the pixel's basis, into the
+  // batch; returns their number.
+  size_t gatherPairs(const EdgeBinTile& bin, uint64_t framed, CoverageScratch& s,
+                     CoverageTileWork& work) const {
+    size_t pairs = 0;
+    for (const uint64_t mask : s.candidates) {
+      pairs += size_t(__builtin_popcountll(mask & framed));
+    }
+    s.batch.resize(pairs);
+    size_t next = 0;
+    for (size_t j = 0; j < s.candidates.size(); ++j) {
+      const uint32_t edge = bin.begin[j];
+      const PotentialEdge& e = edges_.regions.edges[edge];
+      for (uint64_t todo = s.candidates[j] & framed; todo != 0; todo &= todo - 1) {
+        const int i = __builtin_ctzll(todo);
+        s.batch.set(next++, s.bases[i].homogeneous(e.a), s.bases[i].homogeneous(e.b),
+                    edges_.weight[edge], i);
+      }
+    }
+    work.pairs += pairs;
+    return pairs;
+  }
+
+  // Each pair's c_e: the fraction of the light the edge's hard quad covers (section 3.1.3,
+  // shape_coverage.h), from the table or the kernels.
+  void edgeCoverage(PairBatch& b, size_t n) const {
+    const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(),      b.x1.data(),
+                                  b.y1.data(), b.w1.data(), b.fraction.data()};
+    if (n == 0 || textured_) {
+      // no pair: the hard value (and the own plane) stand; a textured light's terms are
+      // its own (sumEdgeTerms)
+    } else if (f_.table != nullptr) {
+      // The table lookups: scalar, in double, the same in both modes.
+      for (size_t k = 0; k < n; ++k) {
+        b.fraction[k] = f_.table->lookup(dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                         dvec3(b.x1[k], b.y1[k], b.w1[k]), f_.options.table);
+      }
+    } else if (f_.light.shape == LightShape::Rectangle) {
+      squareCoverage(batch, n, f_.simd);
+    } else {
+      diskCoverage(batch, n, f_.simd);
+    }
+  }
+
+  // The signed terms sign_e * c_e summed per pixel (section 2.1.3). Where the visible
+  // surface's own plane cuts the light (the terminator), the light that is left is the part L'
+  // in front of it: the cones over the silhouette cover L' as they cover L (winding number
+  // times), so V = f (1 - count) + sum of the edges' terms over L', f = |L'| / |L|, exactly;
+  // the terms over L with min(V, f) would count light an occluder hides in front of the plane.
+  // Scalar, in double, the same in both modes (analytic lights only: the table has no
+  // half-plane). In pair order: the sums do not depend on threads or SIMD.
+  void sumEdgeTerms(CoverageScratch& s, size_t n, CoverageTileWork& work) const {
+    const PairBatch& b = s.batch;
+    for (size_t k = 0; k < n; ++k) {
+      const int i = b.pixel[k];
+      if (textured_) {
+        // Per channel, exact (textured_coverage.h), from the same float end points and cut
+        // by the own plane as below.
+        dvec2 lo, hi;
+        if (clipToOutline(LightOutline::Square, dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                          dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)) {
+          const dvec3 fraction = f_.texture->beyondFraction(
+              lo, hi, s.flip[i], s.own_plane[i] < 1.0f, s.plane_slope[i], s.plane_offset[i]);
+          if (fraction != dvec3(0.0)) ++work.inside;
+          s.sum_rgb[i] += double(b.weight[k]) * fraction;
+        }
+        continue;
+      }
+      float fraction = b.fraction[k];
+      if (cut_terms_ && s.own_plane[i] < 1.0f) {
+        dvec2 lo, hi;
+        fraction = clipToOutline(s.bases[i].outline, dvec3(b.x0[k], b.y0[k], b.w0[k]),
+                                 dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)
+                       ? float(insideFractionInHalfPlane(s.bases[i].outline, lo, hi,
+                                                         s.plane_slope[i], s.plane_offset[i]))
+                       : 0.0f;
+      }
+      if (fraction != 0.0f) ++work.inside;
+      s.sum[i] += float(b.weight[k]) * fraction;
+    }
+  }
+
+  // V = hard + the terms, clamped to [0, 1] (section 2.1.3), or to the own plane's share.
+  void writeVisibility(uint64_t framed, const CoverageScratch& s) const {
+    for (uint64_t active = framed; active != 0; active &= active - 1) {
+      const int i = __builtin_ctzll(active);
+      if (!s.framed[i]) continue;
+      const float f = s.own_plane[i];
+      if (textured_) {
+        for (int c = 0; c < 3; ++c) {
+          const float fc = float(s.own_rgb[i][c]), sum = float(s.sum_rgb[i][c]);
+          images_.rgb[size_t(c)].at(s.px[i], s.py[i]) =
+              f < 1.0f ? std::clamp(fc * s.hard[i] + sum, 0.0f, fc)
+                       : std::clamp(s.hard[i] + sum, 0.0f, 1.0f);
+        }
+        continue;
+      }
+      images_.grey.at(s.px[i], s.py[i]) =
+          cut_terms_ && f < 1.0f ? std::clamp(f * s.hard[i] + s.sum[i], 0.0f, f)
+                                 : std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), f);
+    }
+  }
+
+  const CoverageFrame& f_;
+  const EyeBuffers& eye_;
+  const Image<int32_t>& stencil_;
+  const CoverageEdges& edges_;
+  const EdgeBins& bins_;
+  CoverageImages& images_;
+  const FacingAway away_;
+  const PixelUnprojector unproject_;
+  const dvec3 edge_v_;
+  const bool textured_, cut_terms_;
+};
+
+// One coverage pass (Funk 2004, section 2.1): pass 1's stencil, the silhouette edges from the
+// light centre, their regions binned to tiles, and pass 2 over the tiles. `policy` for the
+// casters, `casts` for which meshes.
+CoverageImages coveragePass(const CoverageFrame& f, ShadowStencilOptions& stencil_options,
+                            CasterPolicy policy, const std::vector<uint8_t>* casts,
+                            Stats& stats) {
+  const int width = f.eye.depth.width(), height = f.eye.depth.height();
+  stencil_options.policy = policy;
+  stencil_options.casting_meshes = casts;
+  const Image<int32_t> stencil =
+      shadowStencil(f.scene, f.light.center, f.view, f.eye, stencil_options, stats);
+  CoverageEdges edges;
+  {
+    PassTimer timer(stats, "edges");
+    edges = silhouetteEdgesFromCentre(f.scene, f.light, f.view, f.eye, policy, casts);
+    stats.wedges += edges.weight.size();
+  }
+  EdgeBins bins;
+  {
+    PassTimer timer(stats, "binning");
+    // The regions of the light's bounding sphere (light.h: radius bounds every shape).
+    Light bound = f.light;
+    bound.shape = LightShape::Sphere;
+    bins = binEdges(edges.regions, bound, f.view, f.eye.depth, f.options.tile_level,
+                    kRegionMarginFootprints);
+    stats.tiles_tested += bins.tiles_tested;
+    stats.tiles_culled += bins.tiles_culled;
+  }
+  CoverageImages images;
+  if (f.texture != nullptr) {
+    for (Image<float>& c : images.rgb) c.resize(width, height, 1.0f);
+  } else {
+    images.grey.resize(width, height, 1.0f);
+  }
+  PassTimer timer(stats, "coverage");
+  const CoverageTileRender render(f, stencil, edges, bins, images);
+  const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
+  std::vector<CoverageTileWork> tile_work(tiles);
+  parallelFor(tiles, [&](size_t index) {
+    thread_local std::unique_ptr<CoverageScratch> scratch_slot;
+    if (!scratch_slot) scratch_slot = std::make_unique<CoverageScratch>();
+    render.renderTile(index, *scratch_slot, tile_work[index]);
+  });
+  for (const CoverageTileWork& w : tile_work) {
+    stats.z_reads += w.reads;
+    stats.penumbra_tests += w.pairs;
+    stats.penumbra_inside += w.inside;
+  }
+  return images;
+}
+
 TechniqueResult CoverageShadows::render(const Light& light, const View& view,
                                         const EyeBuffers& eye,
                                         const RenderContext& context) const {
@@ -184,7 +513,6 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
                  "light takes --coverage-table analytic");
   std::unique_ptr<TexturedSquare> texture;
   if (textured) texture = std::make_unique<TexturedSquare>(*light.texture);
-  const dvec3 edge_v(light.edge_v);
   const CoverageTableData* table = nullptr;
   TechniqueResult result;
   Stats& stats = result.stats;
@@ -192,240 +520,9 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
     PassTimer timer(stats, "table");
     table = &tables_.get(light, options_.table_size);
   }
-  // Both passes below with one silhouette: `policy` for the casters, `casts` for which meshes.
-  auto coveragePass = [&](CasterPolicy policy, const std::vector<uint8_t>* casts) {
-    stencil_options.policy = policy;
-    stencil_options.casting_meshes = casts;
-    const Image<int32_t> stencil =
-        shadowStencil(scene_, light.center, view, eye, stencil_options, stats);
-    CoverageEdges edges;
-    {
-      PassTimer timer(stats, "edges");
-      edges = silhouetteEdgesFromCentre(scene_, light, view, eye, policy, casts);
-      stats.wedges += edges.weight.size();
-    }
-    EdgeBins bins;
-    {
-      PassTimer timer(stats, "binning");
-      // The regions of the light's bounding sphere (light.h: radius bounds every shape).
-      Light bound = light;
-      bound.shape = LightShape::Sphere;
-      bins = binEdges(edges.regions, bound, view, eye.depth, options_.tile_level,
-                      kRegionMarginFootprints);
-      stats.tiles_tested += bins.tiles_tested;
-      stats.tiles_culled += bins.tiles_culled;
-    }
-    CoverageImages images;
-    if (textured) {
-      for (Image<float>& c : images.rgb) c.resize(width, height, 1.0f);
-    } else {
-      images.grey.resize(width, height, 1.0f);
-    }
-    {
-      PassTimer timer(stats, "coverage");
-      const FacingAway away(scene_, light, view);
-      const PixelUnprojector unproject(view);
-      const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
-      std::vector<CoverageTileWork> tile_work(tiles);
-      parallelFor(tiles, [&](size_t index) {
-        thread_local std::unique_ptr<CoverageScratch> scratch_slot;
-        if (!scratch_slot) scratch_slot = std::make_unique<CoverageScratch>();
-        CoverageScratch& s = *scratch_slot;
-        CoverageTileWork& work = tile_work[index];
-        const EdgeBinTile bin = edgeBinTile(bins, index, width, height);
-        const uint32_t* begin = bin.begin;
-        const uint32_t* end = bin.end;
-        const int x0 = bin.x0, x1 = bin.x1, y0 = bin.y0, y1 = bin.y1;
-        const auto writeHard = [&](int px, int py, int32_t count) {
-          const float hard_visibility = count == 0 ? 1.0f : 0.0f;
-          if (textured) {
-            for (Image<float>& c : images.rgb) c.at(px, py) = hard_visibility;
-          } else {
-            images.grey.at(px, py) = hard_visibility;
-          }
-        };
-        // No edge reaches the tile (most of a frame's tiles): the hard value is the answer
-        // unless a pixel's own plane cuts the light, and only then is the tile set up below.
-        if (begin == end) {
-          bool any_cut = false;
-          for (int py = y0; py < y1; ++py) {
-            for (int px = x0; px < x1; ++px) {
-              writeHard(px, py, stencil.at(px, py));
-              const uint32_t id = eye.primitive.at(px, py);
-              any_cut |= id != kNoPrimitive && eye.depth.depth.at(px, py) > 0.0f && !away(id) &&
-                         !away.clearOfLight(id);
-            }
-          }
-          if (!any_cut) return;
-        }
-        int x = x0, y = y0;
-        while (y < y1) {
-          PixelBlock& block = s.block;
-          block.active = 0;
-          uint64_t cut = 0;  // pixels whose own plane cuts the light
-          int used = 0;
-          for (; y < y1 && used < kBlockPixels; x = (x + 1 < x1) ? x + 1 : x0, y += (x == x0)) {
-            const int i = used++;
-            s.px[i] = x;
-            s.py[i] = y;
-            block.sx[i] = float(x) + 0.5f;
-            block.sy[i] = float(y) + 0.5f;
-            block.z[i] = eye.depth.depth.at(x, y);
-            const int32_t count = stencil.at(x, y);
-            writeHard(x, y, count);
-            s.hard[i] = 1.0f - float(count);
-            const uint32_t id = eye.primitive.at(x, y);
-            if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away(id)) continue;
-            block.active |= uint64_t(1) << i;
-            s.framed[i] = false;
-            s.sum[i] = 0.0f;
-            s.own_plane[i] = 1.0f;
-            if (textured) {
-              s.sum_rgb[i] = dvec3(0.0);
-              s.own_rgb[i] = dvec3(1.0);
-            }
-            // The visible triangle's plane cuts the light: the part behind it is blocked by the
-            // surface itself (the oracle's RayStart::intoSurface; FacingAway when all of it is),
-            // so the point needs its basis whether an edge reaches it or not.
-            if (!away.clearOfLight(id)) cut |= uint64_t(1) << i;
-          }
-          for (; used < kBlockPixels; ++used) block.z[used] = 0.0f;
-          if (block.active == 0) continue;
-          // The edges' candidate pixels first, then every basis the block needs in one loop
-          // (independent iterations: the square roots and divisions of one pixel's basis
-          // overlap the next one's), then the pairs.
-          s.candidates.clear();
-          uint64_t reached = 0;
-          for (const uint32_t* it = begin; it != end; ++it) {
-            work.tests += uint64_t(__builtin_popcountll(block.active));
-            const uint64_t mask = edgeCandidates(bins.tests[*it], block, context.simd);
-            s.candidates.push_back(mask);
-            reached |= mask;
-          }
-          uint64_t framed_ok = (reached | cut) & block.active;
-          for (uint64_t todo = framed_ok; todo != 0; todo &= todo - 1) {
-            const int i = __builtin_ctzll(todo);
-            s.framed[i] = true;
-            ++work.reads;
-            const dvec3 p = unproject(s.px[i], s.py[i], block.z[i]);
-            if (!coverageBasis(light, p, s.bases[i])) {
-              framed_ok &= ~(uint64_t(1) << i);
-              continue;
-            }
-            s.flip[i] = glm::dot(s.bases[i].b, edge_v) < 0.0;
-          }
-          for (uint64_t todo = framed_ok & cut; todo != 0; todo &= todo - 1) {
-            const int i = __builtin_ctzll(todo);
-            const uint32_t id = eye.primitive.at(s.px[i], s.py[i]);
-            const dvec3 normal = triangleNormalTowardEye(scene_, id, view);
-            if (normal == dvec3(0.0)) continue;
-            frontHalfPlane(s.bases[i], normal, s.plane_slope[i], s.plane_offset[i]);
-            s.own_plane[i] =
-                float(halfPlaneFraction(s.bases[i].outline, s.plane_slope[i], s.plane_offset[i]));
-            if (textured && s.own_plane[i] < 1.0f) {
-              s.own_rgb[i] =
-                  texture->halfPlaneFraction(s.plane_slope[i], s.plane_offset[i], s.flip[i]);
-            }
-          }
-          size_t pairs = 0;
-          for (const uint64_t mask : s.candidates) {
-            pairs += size_t(__builtin_popcountll(mask & framed_ok));
-          }
-          s.batch.resize(pairs);
-          size_t next = 0;
-          for (size_t j = 0; j < s.candidates.size(); ++j) {
-            const uint32_t edge = begin[j];
-            const PotentialEdge& e = edges.regions.edges[edge];
-            for (uint64_t todo = s.candidates[j] & framed_ok; todo != 0; todo &= todo - 1) {
-              const int i = __builtin_ctzll(todo);
-              s.batch.set(next++, s.bases[i].homogeneous(e.a), s.bases[i].homogeneous(e.b),
-                          edges.weight[edge], i);
-            }
-          }
-          work.pairs += pairs;
-          const size_t n = s.batch.size();
-          PairBatch& b = s.batch;
-          const DiskCoverageBatch batch{b.x0.data(), b.y0.data(), b.w0.data(),      b.x1.data(),
-                                        b.y1.data(), b.w1.data(), b.fraction.data()};
-          if (n == 0 || textured) {
-            // no pair: the hard value (and the own plane) stand; a textured light's terms are
-            // its own (below)
-          } else if (table != nullptr) {
-            // The table lookups: scalar, in double, the same in both modes.
-            for (size_t k = 0; k < n; ++k) {
-              b.fraction[k] = table->lookup(dvec3(b.x0[k], b.y0[k], b.w0[k]),
-                                            dvec3(b.x1[k], b.y1[k], b.w1[k]), options_.table);
-            }
-          } else if (light.shape == LightShape::Rectangle) {
-            squareCoverage(batch, n, context.simd);
-          } else {
-            diskCoverage(batch, n, context.simd);
-          }
-          // Where the visible surface's own plane cuts the light (the terminator), the light
-          // that is left is the part L' in front of it: the cones over the silhouette cover L'
-          // as they cover L (winding number times), so V = f (1 - count) + sum of the edges'
-          // terms over L', f = |L'| / |L|, exactly; the terms over L with min(V, f) would
-          // count light an occluder hides in front of the plane. Scalar, in double, the same
-          // in both modes (analytic lights only: the table has no half-plane).
-          const bool cut_terms = table == nullptr;
-          // In pair order: the sums do not depend on threads or SIMD.
-          for (size_t k = 0; k < n; ++k) {
-            const int i = b.pixel[k];
-            if (textured) {
-              // Per channel, exact (textured_coverage.h), from the same float end points and
-              // cut by the own plane as below.
-              dvec2 lo, hi;
-              if (clipToOutline(LightOutline::Square, dvec3(b.x0[k], b.y0[k], b.w0[k]),
-                                dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)) {
-                const dvec3 fraction = texture->beyondFraction(
-                    lo, hi, s.flip[i], s.own_plane[i] < 1.0f, s.plane_slope[i], s.plane_offset[i]);
-                if (fraction != dvec3(0.0)) ++work.inside;
-                s.sum_rgb[i] += double(b.weight[k]) * fraction;
-              }
-              continue;
-            }
-            float fraction = b.fraction[k];
-            if (cut_terms && s.own_plane[i] < 1.0f) {
-              dvec2 lo, hi;
-              fraction = clipToOutline(s.bases[i].outline, dvec3(b.x0[k], b.y0[k], b.w0[k]),
-                                       dvec3(b.x1[k], b.y1[k], b.w1[k]), lo, hi)
-                             ? float(insideFractionInHalfPlane(s.bases[i].outline, lo, hi,
-                                                               s.plane_slope[i],
-                                                               s.plane_offset[i]))
-                             : 0.0f;
-            }
-            if (fraction != 0.0f) ++work.inside;
-            s.sum[i] += float(b.weight[k]) * fraction;
-          }
-          for (uint64_t active = framed_ok; active != 0; active &= active - 1) {
-            const int i = __builtin_ctzll(active);
-            if (!s.framed[i]) continue;
-            const float f = s.own_plane[i];
-            if (textured) {
-              for (int c = 0; c < 3; ++c) {
-                const float fc = float(s.own_rgb[i][c]), sum = float(s.sum_rgb[i][c]);
-                images.rgb[size_t(c)].at(s.px[i], s.py[i]) =
-                    f < 1.0f ? std::clamp(fc * s.hard[i] + sum, 0.0f, fc)
-                             : std::clamp(s.hard[i] + sum, 0.0f, 1.0f);
-              }
-              continue;
-            }
-            images.grey.at(s.px[i], s.py[i]) =
-                cut_terms && f < 1.0f
-                    ? std::clamp(f * s.hard[i] + s.sum[i], 0.0f, f)
-                    : std::min(std::clamp(s.hard[i] + s.sum[i], 0.0f, 1.0f), f);
-          }
-        }
-      });
-      for (const CoverageTileWork& w : tile_work) {
-        stats.z_reads += w.reads;
-        stats.penumbra_tests += w.pairs;
-        stats.penumbra_inside += w.inside;
-      }
-    }
-    return images;
-  };
-  CoverageImages soft = coveragePass(kCoveragePolicy, nullptr);
+  const CoverageFrame frame{scene_, light,         view,         eye,
+                            options_, table,       texture.get(), context.simd};
+  CoverageImages soft = coveragePass(frame, stencil_options, kCoveragePolicy, nullptr, stats);
   // Open meshes cast one facing, and a ray through a hole (a terrain's border under a low
   // light) misses it: the other facing of those meshes, in a pass of its own, counts those
   // rays, and the darker visibility is kept, as the wedges do (wedge_technique.cpp).
@@ -433,8 +530,8 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
                                                 ? openMeshesWithBothFacings(scene_, light.center)
                                                 : std::vector<uint8_t>();
   if (!other_facing.empty()) {
-    const CoverageImages other =
-        coveragePass(CasterPolicy::SolidWithHolesOtherFacing, &other_facing);
+    const CoverageImages other = coveragePass(
+        frame, stencil_options, CasterPolicy::SolidWithHolesOtherFacing, &other_facing, stats);
     // Per channel for a textured light (the grey image is then empty, and the rgb ones are
     // otherwise): each image keeps the darker of the two passes.
     const auto darker = [](Image<float>& mine, const Image<float>& theirs) {

@@ -349,76 +349,99 @@ void drawDepthBounded(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
   });
 }
 
-// Hierarchical: classify the volume's tiles, decide the inner ones by their sample, draw the
-// boundary ones per pixel. Adds the decided counts to `coarse`.
-void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
-                      const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
-                      LazyTileTarget& target, const TiledVolumeStencilOptions& options,
-                      int32_t* coarse, VolumeTileWork& work) {
-  const bool simd = options.simd;
-  const int dense_limit = options.dense_limit;
-  const bool zfail = set.zfail[v] != 0;
-  const int n = tile.perRow();
-  // A volume dense here is not classified triangle by tile (TiledVolumeStencilOptions::
-  // dense_limit).
-  constexpr ptrdiff_t kAreas = (kBinTileSize / 8) * (kBinTileSize / 8);  // 8x8 areas per bin tile
-  const bool dense = dense_limit > 0 && last - first > ptrdiff_t(dense_limit) * kAreas;
-  // A z-pass volume the eye may be inside is open on screen: no tile of it is decided by one
-  // sample (volume_set.h: may_contain_eye).
-  const bool open = !zfail && set.may_contain_eye[v] != 0;
-  const bool per_pixel_only = open || dense;
-  const TileBoxClass counted = zfail ? TileBoxClass::Behind : TileBoxClass::Front;
-  // Wholly on the other side of a box, a triangle fails the depth rule at every surface pixel
-  // in it (z-pass counts what lies in front, z-fail what lies behind): drawn, it would only be
-  // culled or rasterized without a write.
-  const TileBoxClass never = zfail ? TileBoxClass::Front : TileBoxClass::Behind;
-  // The depth bounds test for the whole bin tile first (drawDepthBounded): surfaces all nearer
-  // than the volume (where that is allowed) or, with z-fail, all farther count nothing from it.
-  const DepthBounds bounds(set, v);
-  if (bounds.rejects(tile.zmin(), tile.zmax())) return;
-  const TileBox& box = tile.box();
-  const uint64_t surface = tile.surfaceMask();
-  // Tiles that a face seen edge-on reaches: never decided by a sample (vanishedCells).
-  const uint64_t edge_on = vanishedCells(set, v, tile);
-  // The triangles' rects set up here, with their class against the bin tile's box, kept for
-  // the tile walk and the drawing below (one buffer per thread).
-  struct Rect {
-    const SetupTriangle* t;
-    TileEdges e;
-    TileBoxClass whole;
-  };
-  thread_local std::vector<Rect> rects;
-  rects.clear();
-  // Tiles as bits (BinTile::cellMask): those drawn per pixel, and those decided by a sample.
-  uint64_t boundary = 0, decided = 0;
+// A volume triangle's rect in a bin tile, set up once, with its class against the bin tile's
+// box: kept from the classification for the tile walk and the drawing.
+struct HierarchicalRect {
+  const SetupTriangle* t;
+  TileEdges e;
+  TileBoxClass whole;
+};
+
+// The hierarchical rendering of one shadow volume in one bin tile (thesis section 4.3, Figure
+// 4.3): classify the volume's tiles, decide the inner ones by one sample each, draw the
+// potential boundary tiles per pixel; the decided counts are added to `coarse` (one per tile).
+// One object per volume and bin tile; its steps share the tile masks below.
+class HierarchicalVolumeDraw {
+ public:
+  HierarchicalVolumeDraw(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
+                         const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
+                         LazyTileTarget& target, const TiledVolumeStencilOptions& options,
+                         int32_t* coarse, VolumeTileWork& work,
+                         std::vector<HierarchicalRect>& rects)
+      : set_(set), v_(v), first_(first), last_(last), tile_(tile), depth_(depth),
+        target_(target), coarse_(coarse), work_(work), rects_(rects), bounds_(set, v),
+        box_(tile.box()), simd_(options.simd), zfail_(set.zfail[v] != 0), n_(tile.perRow()),
+        // A volume dense here is not classified triangle by tile
+        // (TiledVolumeStencilOptions::dense_limit).
+        dense_(options.dense_limit > 0 &&
+               last - first > ptrdiff_t(options.dense_limit) * kAreasPerBinTile),
+        // A z-pass volume the eye may be inside is open on screen: no tile of it is decided
+        // by one sample (volume_set.h: may_contain_eye).
+        open_(!zfail_ && set.may_contain_eye[v] != 0),
+        counted_(zfail_ ? TileBoxClass::Behind : TileBoxClass::Front),
+        // Wholly on the other side of a box, a triangle fails the depth rule at every surface
+        // pixel in it (z-pass counts what lies in front, z-fail what lies behind): drawn, it
+        // would only be culled or rasterized without a write.
+        never_(zfail_ ? TileBoxClass::Front : TileBoxClass::Behind),
+        surface_(tile.surfaceMask()) {}
+
+  void run() {
+    // The depth bounds test for the whole bin tile first (drawDepthBounded): surfaces all
+    // nearer than the volume (where that is allowed) or, with z-fail, all farther count
+    // nothing from it.
+    if (bounds_.rejects(tile_.zmin(), tile_.zmax())) return;
+    // Tiles that a face seen edge-on reaches: never decided by a sample (vanishedCells).
+    edge_on_ = vanishedCells(set_, v_, tile_);
+    rects_.clear();
+    if (dense_ && !open_ && decideDenseBinTile()) return;
+    if (open_ || dense_) return drawUnclassified();
+    // With tiles as large as the bin tile, the first triangle that crosses makes it a boundary
+    // tile: the rest of the run is drawn without a test (`rest`).
+    const bool bin_level = tile_.level() == kBinTileLevel;
+    bool any_crossing = false;
+    const uint32_t* rest = classifyAgainstBinTile(bin_level, any_crossing);
+    if (!any_crossing && edge_on_ == 0) return decideBinTileBySample();
+    if (bin_level) return drawBinLevelBoundary(rest);
+    classifyTiles();
+    if (boundary_ == 0) return;
+    for (HierarchicalRect& r : rects_)
+      if (r.whole != never_) draw(*r.t, r.e);
+  }
+
+ private:
+  static constexpr ptrdiff_t kAreasPerBinTile = (kBinTileSize / 8) * (kBinTileSize / 8);  // 8x8
   // The boundary tiles drawn per pixel as the per-pixel passes draw (rasterizer.cpp): the
   // depth-rule test per tile from its z-min and z-max culls the tiles no pixel of which can
   // pass, and a polygon covering a whole tile and passing at every pixel of it adds to the
   // tile's count instead (the z-min trivial accept, thesis section 1.5).
-  constexpr int kDraw = 1, kWhole = 2;
-  auto depthRule = [&](const SetupTriangle& t, const TileEdges& sub, float zmin, float zmax) {
-    switch (depthRuleTiles(t, sub, zfail, zmin, zmax, true)) {
+  static constexpr int kDraw = 1, kWhole = 2;
+
+  int depthRule(const SetupTriangle& t, const TileEdges& sub, float zmin, float zmax) const {
+    switch (depthRuleTiles(t, sub, zfail_, zmin, zmax, true)) {
       case DepthRuleTiles::None: return 0;
       case DepthRuleTiles::Some: return kDraw;
       case DepthRuleTiles::All: return kDraw | kWhole;
     }
     return kDraw;
-  };
-  auto drawRect = [&](const Drawn& d, const TileEdges& rect, int code) {
+  }
+
+  void drawRect(const Drawn& d, const TileEdges& rect, int code) {
     if (!(code & kWhole)) {
-      stencilKernel(rect, d.contribution, d.rule, target.get(), work.kernel, simd);
+      stencilKernel(rect, d.contribution, d.rule, target_.get(), work_.kernel, simd_);
       return;
     }
     int cx0, cy0, cx1, cy1;
-    tile.cellRange(rect, cx0, cy0, cx1, cy1);
+    tile_.cellRange(rect, cx0, cy0, cx1, cy1);
     for (int cy = cy0; cy <= cy1; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx) {
-        coarse[cy * n + cx] += d.contribution;
-        ++work.writes;
-        ++work.accepted;
+        coarse_[cy * n_ + cx] += d.contribution;
+        ++work_.writes;
+        ++work_.accepted;
       }
-  };
-  auto draw = [&](const SetupTriangle& t, TileEdges& e) {
+  }
+
+  // The per-pixel step of section 4.3 for one triangle: drawn in the boundary tiles.
+  void draw(const SetupTriangle& t, TileEdges& e) {
     const Drawn d = drawn(t);
     // A triangle whose rect reaches no decided tile is drawn over its whole rect, tested per
     // bin tile as the per-pixel passes do (one depth-rule test and one kernel call instead of
@@ -426,186 +449,181 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // (classifyTileBox found it Outside there, or the tile holds only background). The level
     // is a constant there, so the culling walk compiles to the per-pixel passes' one test
     // (with the level a variable, the volumes drawn per pixel took 6 % longer on fractal).
-    if (decided == 0 || (tile.cellMask(e) & decided) == 0) {
+    if (decided_ == 0 || (tile_.cellMask(e) & decided_) == 0) {
       forEachCullRect(
-          t, e, depth, kBinTileLevel,
+          t, e, depth_, kBinTileLevel,
           [&](const TileEdges& sub, float zmin, float zmax) {
             return depthRule(t, sub, zmin, zmax);
           },
-          [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work.tally,
+          [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work_.tally,
           kWhole);
       return;
     }
     // Otherwise tile by tile, skipping the decided ones.
     forEachCullRect(
-        t, e, depth, tile.level(),
+        t, e, depth_, tile_.level(),
         [&](const TileEdges& sub, float zmin, float zmax) {
           // (The boundary tiles passed the depth bounds test, as the whole bin tile did.)
-          if ((tile.cellMask(sub) & boundary) == 0) return 0;
+          if ((tile_.cellMask(sub) & boundary_) == 0) return 0;
           return depthRule(t, sub, zmin, zmax);
         },
-        [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work.tally, kWhole);
-  };
+        [&](const TileEdges& rect, int code) { drawRect(d, rect, code); }, work_.tally, kWhole);
+  }
+
+  // A triangle drawn unclassified, unless its whole depth range lies on the side that never
+  // counts.
+  void drawCounting(const SetupTriangle& t) {
+    if (classifyDepthRange(t, tile_.zmin(), tile_.zmax()) == never_) return;
+    TileEdges e;
+    if (setupTileRect(t, box_.x0, box_.y0, box_.x1, box_.y1, e)) draw(t, e);
+  }
+
   // z-pass leaves the light caps out, so across a silhouette edge the drawn count changes where
   // the quad is counted (Front): such a tile is decided per pixel.
-  auto silhouetteMeets = [&](const SetupTriangle& t, int x0, int y0, int x1, int y1) {
-    return !zfail && t.owners[0] != ClipTriangles::kNoOwner &&
-           segmentMeetsTile(set.silhouettes[t.owners[0]], x0, y0, x1, y1);
-  };
+  bool silhouetteMeets(const SetupTriangle& t, int x0, int y0, int x1, int y1) const {
+    return !zfail_ && t.owners[0] != ClipTriangles::kNoOwner &&
+           segmentMeetsTile(set_.silhouettes[t.owners[0]], x0, y0, x1, y1);
+  }
+
   // The count of every surface pixel of the bin tile, all of them given by one sample, added
   // to the tiles `reached` (the rects' tiles; the lit and shadowed counts are theirs).
-  auto decideBinTile = [&](uint64_t reached, int32_t count) {
-    reached &= surface;
+  void decideBinTile(uint64_t reached, int32_t count) {
+    reached &= surface_;
     const uint64_t cells = uint64_t(std::popcount(reached));
     if (count == 0) {
-      work.lit += cells;
+      work_.lit += cells;
       return;
     }
-    work.shadowed += cells;
-    work.writes += cells;  // the per-tile counts
-    for (; reached != 0; reached &= reached - 1) coarse[std::countr_zero(reached)] += count;
-  };
+    work_.shadowed += cells;
+    work_.writes += cells;  // the per-tile counts
+    for (; reached != 0; reached &= reached - 1) coarse_[std::countr_zero(reached)] += count;
+  }
+
   // A dense volume is not classified triangle by tile, but its triangles' whole depth ranges
   // (two comparisons each) may still show that none crosses the bin tile's box: all in front
-  // of its surfaces or behind them. Then one sample decides the bin tile, as below. The first
-  // triangle that may cross ends the test: the volume is drawn per pixel.
-  if (dense && !open) {
-    const Cell& s = tile.sampleCell();
+  // of its surfaces or behind them. Then one sample decides the bin tile (true), as in
+  // decideBinTileBySample. The first triangle that may cross ends the test: the volume is drawn
+  // per pixel (false).
+  bool decideDenseBinTile() {
+    const Cell& s = tile_.sampleCell();
     uint64_t reached = 0;
     int32_t count = 0;
     bool crossing = false;
-    forEachRectMask(set, first, last, tile, [&](const uint32_t*, const SetupTriangle& t,
-                                                uint64_t cells) {
-      ++work.tally.tested;
-      TileBoxClass whole = classifyDepthRange(t, tile.zmin(), tile.zmax());
-      if (whole == TileBoxClass::Front && silhouetteMeets(t, box.x0, box.y0, box.x1, box.y1))
+    forEachRectMask(set_, first_, last_, tile_, [&](const uint32_t*, const SetupTriangle& t,
+                                                    uint64_t cells) {
+      ++work_.tally.tested;
+      TileBoxClass whole = classifyDepthRange(t, tile_.zmin(), tile_.zmax());
+      if (whole == TileBoxClass::Front && silhouetteMeets(t, box_.x0, box_.y0, box_.x1, box_.y1))
         whole = TileBoxClass::Crossing;
       crossing = whole == TileBoxClass::Crossing;
       reached |= cells;
-      if (whole == counted && coversPixel(t, s.sample_x, s.sample_y))
+      if (whole == counted_ && coversPixel(t, s.sample_x, s.sample_y))
         count += drawn(t).contribution;
       return !crossing;
     });
-    if (!crossing && edge_on == 0) return decideBinTile(reached, count);
+    if (crossing || edge_on_ != 0) return false;
+    decideBinTile(reached, count);
+    return true;
   }
-  // A triangle drawn unclassified, unless its whole depth range lies on the side that never
-  // counts.
-  auto drawCounting = [&](const SetupTriangle& t) {
-    if (classifyDepthRange(t, tile.zmin(), tile.zmax()) == never) return;
-    TileEdges e;
-    if (setupTileRect(t, box.x0, box.y0, box.x1, box.y1, e)) draw(t, e);
-  };
-  if (per_pixel_only) {
-    // Unclassified: the boundary tiles are the surface tiles the triangles' rects reach.
-    // Nothing is drawn until a triangle reaches one (a volume over only background here draws
-    // nothing); the triangles before it are then drawn first (the stencil is a sum: the order
-    // does not matter).
+
+  // Unclassified (open or dense volumes): the boundary tiles are the surface tiles the
+  // triangles' rects reach. Nothing is drawn until a triangle reaches one (a volume over only
+  // background here draws nothing); the triangles before it are then drawn first (the stencil
+  // is a sum: the order does not matter).
+  void drawUnclassified() {
     uint64_t reached = 0;
-    const uint32_t* pending = first;  // the triangles before it are drawn
-    forEachRectMask(set, first, last, tile, [&](const uint32_t* k, const SetupTriangle& t,
-                                                uint64_t cells) {
+    const uint32_t* pending = first_;  // the triangles before it are drawn
+    forEachRectMask(set_, first_, last_, tile_, [&](const uint32_t* k, const SetupTriangle& t,
+                                                    uint64_t cells) {
       reached |= cells;
-      if ((reached & surface) == 0) return true;
-      for (; pending != k; ++pending) drawCounting(set.triangles[*pending]);
+      if ((reached & surface_) == 0) return true;
+      for (; pending != k; ++pending) drawCounting(set_.triangles[*pending]);
       pending = k + 1;
       drawCounting(t);
       return true;
     });
-    boundary = reached & surface;
-    work.boundary += uint64_t(std::popcount(boundary));
-    return;
-  } else {
-    // Each triangle first against the box of its whole rect's pixels and the bin tile's
-    // surface range: each smaller tile's box lies inside it, so an answer other than Crossing
-    // holds for every tile of the rect (which is then classified without a test of its own:
-    // the sample decides). With tiles as large as the bin tile, the first triangle that crosses
-    // makes it a boundary tile: the rest of the run is drawn without a test (`rest`).
-    const bool bin_level = tile.level() == kBinTileLevel;
-    bool any_crossing = false;
-    const uint32_t* rest = forEachTileRect(set, first, last, box, [&](const SetupTriangle& t,
-                                                                      TileEdges& e) {
-      ++work.tally.tested;
-      TileBoxClass whole = classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile.zmin(), tile.zmax());
+    boundary_ = reached & surface_;
+    work_.boundary += uint64_t(std::popcount(boundary_));
+  }
+
+  // The classification to potential boundary tiles (section 4.3), first for the bin tile: each
+  // triangle against the box of its whole rect's pixels and the bin tile's surface range. Each
+  // smaller tile's box lies inside it, so an answer other than Crossing holds for every tile of
+  // the rect (which is then classified without a test of its own: the sample decides). Keeps
+  // the rects in rects_; returns where the run's rest begins (with bin_level, after the first
+  // crossing triangle).
+  const uint32_t* classifyAgainstBinTile(bool bin_level, bool& any_crossing) {
+    return forEachTileRect(set_, first_, last_, box_, [&](const SetupTriangle& t, TileEdges& e) {
+      ++work_.tally.tested;
+      TileBoxClass whole =
+          classifyTileBox(t, e.x0, e.y0, e.x1, e.y1, tile_.zmin(), tile_.zmax());
       // The count changes across a silhouette edge on both of its sides, beyond the rect of
       // the quad that holds it: the edge is tested against the whole bin tile.
-      if (whole == TileBoxClass::Front && silhouetteMeets(t, box.x0, box.y0, box.x1, box.y1))
+      if (whole == TileBoxClass::Front && silhouetteMeets(t, box_.x0, box_.y0, box_.x1, box_.y1))
         whole = TileBoxClass::Crossing;  // decide tile by tile
       if (whole == TileBoxClass::Outside) {
-        ++work.tally.culled;
+        ++work_.tally.culled;
         return true;  // no pixel centre of the bin tile under it
       }
       any_crossing |= whole == TileBoxClass::Crossing;
-      rects.push_back({&t, e, whole});
+      rects_.push_back({&t, e, whole});
       return !(bin_level && any_crossing);
     });
-    // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
-    // outside the volume, so every surface pixel of the bin tile has one count, the sample's
-    // (section 4.3's argument for a tile, made for the bin tile; z-pass's open silhouette
-    // edges made their quads Crossing above, and a face seen edge-on, which set-up dropped,
-    // keeps the tiles it reaches from being decided). Each tile a rect reaches is decided with
-    // that count, as the tile-by-tile walk below would decide it: its classes would all be
-    // inherited, and its samples would find the same count. One walk over the rects instead
-    // of one per tile.
-    if (!any_crossing && edge_on == 0) {
-      const Cell& s = tile.sampleCell();
-      uint64_t reached = 0;
-      int32_t count = 0;
-      for (const Rect& r : rects) {
-        reached |= tile.cellMask(r.e);
-        if (r.whole == counted && coversPixel(*r.t, s.sample_x, s.sample_y))
-          count += drawn(*r.t).contribution;
-      }
-      return decideBinTile(reached, count);
+  }
+
+  // No triangle crosses the bin tile's box: the box, convex, lies wholly inside or wholly
+  // outside the volume, so every surface pixel of the bin tile has one count, the sample's
+  // (section 4.3's argument for a tile, made for the bin tile; z-pass's open silhouette edges
+  // made their quads Crossing, and a face seen edge-on, which set-up dropped, keeps the tiles
+  // it reaches from being decided). Each tile a rect reaches is decided with that count, as
+  // the tile-by-tile walk (classifyTiles) would decide it: its classes would all be inherited,
+  // and its samples would find the same count. One walk over the rects instead of one per
+  // tile.
+  void decideBinTileBySample() {
+    const Cell& s = tile_.sampleCell();
+    uint64_t reached = 0;
+    int32_t count = 0;
+    for (const HierarchicalRect& r : rects_) {
+      reached |= tile_.cellMask(r.e);
+      if (r.whole == counted_ && coversPixel(*r.t, s.sample_x, s.sample_y))
+        count += drawn(*r.t).contribution;
     }
-    if (bin_level) {
-      // Tiles as large as the bin tile: the one tile's box is the box just tested, so a
-      // triangle crossing it crosses the tile, and the tile is a boundary tile (as it is when a
-      // face seen edge-on reaches it).
-      boundary = surface;
-      work.boundary += uint64_t(std::popcount(boundary));
-      for (Rect& r : rects)
-        if (r.whole != never) draw(*r.t, r.e);
-      for (; rest != last; ++rest) {
-        if (last - rest > ptrdiff_t(kBinLookahead))
-          prefetchSetupTriangle(set.triangles[rest[kBinLookahead]]);
-        drawCounting(set.triangles[*rest]);
-      }
-      return;
+    decideBinTile(reached, count);
+  }
+
+  // Tiles as large as the bin tile: the one tile's box is the box just tested, so a triangle
+  // crossing it crosses the tile, and the tile is a boundary tile (as it is when a face seen
+  // edge-on reaches it), drawn per pixel: the rects kept, then the run's rest unclassified.
+  void drawBinLevelBoundary(const uint32_t* rest) {
+    boundary_ = surface_;
+    work_.boundary += uint64_t(std::popcount(boundary_));
+    for (HierarchicalRect& r : rects_)
+      if (r.whole != never_) draw(*r.t, r.e);
+    for (; rest != last_; ++rest) {
+      if (last_ - rest > ptrdiff_t(kBinLookahead))
+        prefetchSetupTriangle(set_.triangles[rest[kBinLookahead]]);
+      drawCounting(set_.triangles[*rest]);
     }
-    // Tile by tile: the rects crossing the bin tile's box are tested per tile (a tile found a
-    // boundary tile by an earlier rect is not tested again); the others take their class over
-    // every tile they reach.
+  }
+
+  // The classification to potential boundary tiles tile by tile (section 4.3), and the
+  // decision of the others by their sample: the rects crossing the bin tile's box are tested
+  // per tile (a tile found a boundary tile by an earlier rect is not tested again); the others
+  // take their class over every tile they reach. Sets boundary_ and decided_.
+  void classifyTiles() {
     int32_t sample[kMaxCells];
-    std::fill_n(sample, n * n, 0);
+    std::fill_n(sample, n_ * n_, 0);
     // Tiles a face seen edge-on reaches are boundary tiles where some rect reaches them.
-    if (edge_on != 0)
-      for (const Rect& r : rects) boundary |= tile.cellMask(r.e) & edge_on;
+    if (edge_on_ != 0)
+      for (const HierarchicalRect& r : rects_) boundary_ |= tile_.cellMask(r.e) & edge_on_;
     uint64_t touched = 0;
-    for (const Rect& r : rects) {
-      const uint64_t reached = tile.cellMask(r.e) & surface;
+    for (const HierarchicalRect& r : rects_) {
+      const uint64_t reached = tile_.cellMask(r.e) & surface_;
       if (r.whole != TileBoxClass::Crossing) {
         touched |= reached;
         continue;
       }
-      const SetupTriangle& t = *r.t;
-      const int32_t contribution = drawn(t).contribution;
-      for (uint64_t m = reached & ~boundary; m != 0; m &= m - 1) {
-        const int i = std::countr_zero(m);
-        const Cell& c = tile.cell(i);
-        ++work.tally.tested;
-        const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
-        if (cls == TileBoxClass::Outside) {
-          ++work.tally.culled;
-          continue;
-        }
-        touched |= uint64_t(1) << i;
-        if (cls == TileBoxClass::Crossing ||
-            (cls == TileBoxClass::Front && silhouetteMeets(t, c.x0, c.y0, c.x1, c.y1))) {
-          boundary |= uint64_t(1) << i;
-        } else if (cls == counted && coversPixel(t, c.sample_x, c.sample_y)) {
-          sample[i] += contribution;
-        }
-      }
+      classifyCrossingRect(*r.t, reached, touched, sample);
     }
     // The depth bounds test per tile (thesis section 2.2), for the volume as a whole: a
     // boundary tile whose surfaces it rejects counts nothing from the volume (DepthBounds), so
@@ -614,39 +632,99 @@ void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* firs
     // wrong wherever the skipped ones do not cancel (a tile made a boundary tile by a face seen
     // edge-on need not overlap the volume's depth range at all).
     uint64_t rejected = 0;
-    for (uint64_t m = boundary; m != 0; m &= m - 1) {
+    for (uint64_t m = boundary_; m != 0; m &= m - 1) {
       const int i = std::countr_zero(m);
-      if (bounds.rejects(tile.cell(i).zmin, tile.cell(i).zmax)) rejected |= uint64_t(1) << i;
+      if (bounds_.rejects(tile_.cell(i).zmin, tile_.cell(i).zmax)) rejected |= uint64_t(1) << i;
     }
-    boundary &= ~rejected;
+    boundary_ &= ~rejected;
     // The samples of the rects counted over every tile they reach, now that the tiles left to
     // decide are known.
-    decided = (touched | rejected) & ~boundary;
-    for (const Rect& r : rects) {
-      if (r.whole != counted) continue;
+    decided_ = (touched | rejected) & ~boundary_;
+    for (const HierarchicalRect& r : rects_) {
+      if (r.whole != counted_) continue;
       const int32_t contribution = drawn(*r.t).contribution;
-      for (uint64_t m = tile.cellMask(r.e) & decided; m != 0; m &= m - 1) {
+      for (uint64_t m = tile_.cellMask(r.e) & decided_; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
-        const Cell& c = tile.cell(i);
+        const Cell& c = tile_.cell(i);
         if (coversPixel(*r.t, c.sample_x, c.sample_y)) sample[i] += contribution;
       }
     }
     for (uint64_t m = rejected; m != 0; m &= m - 1) sample[std::countr_zero(m)] = 0;
-    work.boundary += uint64_t(std::popcount(boundary));
-    for (uint64_t m = decided; m != 0; m &= m - 1) {
+    work_.boundary += uint64_t(std::popcount(boundary_));
+    decideTilesBySample(sample);
+  }
+
+  // One triangle crossing the bin tile's box, classified against each surface tile it reaches
+  // that is not yet a boundary tile: a crossing tile (or, with z-pass, one its silhouette edge
+  // meets) becomes a boundary tile; a tile it covers from the counted side at its sample adds
+  // its contribution there.
+  void classifyCrossingRect(const SetupTriangle& t, uint64_t reached, uint64_t& touched,
+                            int32_t* sample) {
+    const int32_t contribution = drawn(t).contribution;
+    for (uint64_t m = reached & ~boundary_; m != 0; m &= m - 1) {
       const int i = std::countr_zero(m);
-      if (sample[i] != 0) {
-        ++work.shadowed;
-        ++work.writes;  // the per-tile count
-        coarse[i] += sample[i];
-      } else {
-        ++work.lit;
+      const Cell& c = tile_.cell(i);
+      ++work_.tally.tested;
+      const TileBoxClass cls = classifyTileBox(t, c.x0, c.y0, c.x1, c.y1, c.zmin, c.zmax);
+      if (cls == TileBoxClass::Outside) {
+        ++work_.tally.culled;
+        continue;
+      }
+      touched |= uint64_t(1) << i;
+      if (cls == TileBoxClass::Crossing ||
+          (cls == TileBoxClass::Front && silhouetteMeets(t, c.x0, c.y0, c.x1, c.y1))) {
+        boundary_ |= uint64_t(1) << i;
+      } else if (cls == counted_ && coversPixel(t, c.sample_x, c.sample_y)) {
+        sample[i] += contribution;
       }
     }
-    if (boundary == 0) return;
   }
-  for (Rect& r : rects)
-    if (r.whole != never) draw(*r.t, r.e);
+
+  // The decided tiles take their sample's count (thesis section 4.3, Figure 4.3 b): a non-zero
+  // count is added to the tile's count, shadowed; zero leaves it lit.
+  void decideTilesBySample(const int32_t* sample) {
+    for (uint64_t m = decided_; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      if (sample[i] != 0) {
+        ++work_.shadowed;
+        ++work_.writes;  // the per-tile count
+        coarse_[i] += sample[i];
+      } else {
+        ++work_.lit;
+      }
+    }
+  }
+
+  const ShadowVolumeSet& set_;
+  size_t v_;
+  const uint32_t *first_, *last_;
+  const BinTile& tile_;
+  const DepthBuffer& depth_;
+  LazyTileTarget& target_;
+  int32_t* coarse_;
+  VolumeTileWork& work_;
+  std::vector<HierarchicalRect>& rects_;
+  const DepthBounds bounds_;
+  const TileBox& box_;
+  const bool simd_, zfail_;
+  const int n_;
+  const bool dense_, open_;
+  const TileBoxClass counted_, never_;
+  const uint64_t surface_;
+  uint64_t edge_on_ = 0;
+  // Tiles as bits (BinTile::cellMask): those drawn per pixel, and those decided by a sample.
+  uint64_t boundary_ = 0, decided_ = 0;
+};
+
+// Hierarchical (thesis section 4.3): classify the volume's tiles, decide the inner ones by
+// their sample, draw the boundary ones per pixel. Adds the decided counts to `coarse`.
+void drawHierarchical(const ShadowVolumeSet& set, size_t v, const uint32_t* first,
+                      const uint32_t* last, const BinTile& tile, const DepthBuffer& depth,
+                      LazyTileTarget& target, const TiledVolumeStencilOptions& options,
+                      int32_t* coarse, VolumeTileWork& work) {
+  thread_local std::vector<HierarchicalRect> rects;  // one buffer per thread
+  HierarchicalVolumeDraw(set, v, first, last, tile, depth, target, options, coarse, work, rects)
+      .run();
 }
 
 TileBox binTileBox(const TileBins& bins, size_t tile, int width, int height) {

@@ -26,6 +26,65 @@ ScreenSegment screenSegment(const vec4& a, const vec4& b, const View& view) {
   return s;
 }
 
+// One caster's shadow volume polygons, tagged with volume `tag` (owners[1]): the same polygons,
+// in the same order and vertex order, as the per-pixel stencil's (shadow_stencil.cpp), so
+// every pixel a volume polygon reaches gets bit-identical edge and depth values. A z-pass
+// silhouette edge's quad keeps its segment (owners[0]), whose ends go to segment_ends.
+void appendHierarchicalVolumePolygons(const Mesh& mesh, uint32_t tag, const vec3& centre,
+                                      const View& view, CasterVolume& volume,
+                                      ClipTriangles& polygons,
+                                      std::vector<std::array<uint32_t, 2>>& segment_ends) {
+  appendExtrudedVertices(mesh, centre, view, volume, polygons);
+  const uint32_t finite = volume.finite, infinite = volume.infinite;
+  const uint8_t flags = volume.zfail ? kZFail : 0;
+  for (const SilhouetteEdge& e : volume.silhouette.edges) {
+    uint32_t segment = ClipTriangles::kNoOwner;
+    if (!volume.zfail) {
+      segment = uint32_t(segment_ends.size());
+      segment_ends.push_back({finite + e.v1, finite + e.v0});
+    }
+    polygons.addOwned(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags,
+                      segment, tag);
+    polygons.addOwned(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags,
+                      ClipTriangles::kNoOwner, tag);
+  }
+  // z-pass: caps are never in front of a visible point (volume_technique.cpp).
+  if (volume.zfail)
+    forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
+      polygons.addOwned(a, b, c, weight, flags, ClipTriangles::kNoOwner, tag);
+    });
+}
+
+// The z-pass silhouette edges on screen (set.silhouettes), in parallel: each projection
+// divides in double, and the edges' vertices lie anywhere in the eye pass's array (fractal's
+// 10,306 segments took 0.3 ms in one thread).
+void projectSilhouettes(const std::vector<std::array<uint32_t, 2>>& segment_ends,
+                        const EyeBuffers& eye, const View& view, ShadowVolumeSet& set) {
+  set.silhouettes.resize(segment_ends.size());
+  constexpr size_t kSegmentChunk = 2048;
+  parallelFor((segment_ends.size() + kSegmentChunk - 1) / kSegmentChunk, [&](size_t chunk) {
+    const size_t end = std::min(segment_ends.size(), (chunk + 1) * kSegmentChunk);
+    for (size_t i = chunk * kSegmentChunk; i < end; ++i)
+      set.silhouettes[i] = screenSegment(eye.clip_vertices[segment_ends[i][0]],
+                                         eye.clip_vertices[segment_ends[i][1]], view);
+  });
+}
+
+// Each volume's run of set-up triangles (set-up keeps the input order) and its depth range,
+// for the depth bounds test (thesis section 2.2).
+void findVolumeRanges(size_t meshes, ShadowVolumeSet& set) {
+  set.begin.assign(meshes + 1, 0);
+  set.depth_min.assign(meshes, 1.0f);
+  set.depth_max.assign(meshes, 0.0f);
+  for (const SetupTriangle& t : set.triangles) {
+    const uint32_t v = t.owners[1];
+    ++set.begin[v + 1];
+    set.depth_min[v] = std::min(set.depth_min[v], t.depth_min);
+    set.depth_max[v] = std::max(set.depth_max[v], t.depth_max);
+  }
+  for (size_t m = 0; m < meshes; ++m) set.begin[m + 1] += set.begin[m];
+}
+
 }  // namespace
 
 void indexVanishedPieces(const ClipTriangles& polygons, std::vector<VanishedPiece> pieces,
@@ -71,59 +130,19 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
   // The z-pass silhouette edges' ends (eye-pass vertices), projected after the loop.
   std::vector<std::array<uint32_t, 2>> segment_ends;
   for (size_t m = 0; m < meshes; ++m) {
-    const Mesh& mesh = scene.meshes[m];
     CasterVolume& volume = casters[m];
     stats.silhouette_edges += volume.silhouette.edges.size();
-    // The same polygons, in the same order and vertex order, as the per-pixel stencil's
-    // (shadow_stencil.cpp), so every pixel a volume polygon reaches gets bit-identical edge
-    // and depth values.
-    appendExtrudedVertices(mesh, centre, view, volume, polygons);
-    const uint32_t finite = volume.finite, infinite = volume.infinite;
-    const uint8_t flags = volume.zfail ? kZFail : 0;
-    const uint32_t tag = uint32_t(m);
-    for (const SilhouetteEdge& e : volume.silhouette.edges) {
-      uint32_t segment = ClipTriangles::kNoOwner;
-      if (!volume.zfail) {
-        segment = uint32_t(segment_ends.size());
-        segment_ends.push_back({finite + e.v1, finite + e.v0});
-      }
-      polygons.addOwned(finite + e.v1, finite + e.v0, infinite + e.v0, e.multiplicity, flags,
-                        segment, tag);
-      polygons.addOwned(finite + e.v1, infinite + e.v0, infinite + e.v1, e.multiplicity, flags,
-                        ClipTriangles::kNoOwner, tag);
-    }
-    // z-pass: caps are never in front of a visible point (volume_technique.cpp).
-    if (volume.zfail)
-      forEachCap(mesh, volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
-        polygons.addOwned(a, b, c, weight, flags, ClipTriangles::kNoOwner, tag);
-      });
+    appendHierarchicalVolumePolygons(scene.meshes[m], uint32_t(m), centre, view, volume,
+                                     polygons, segment_ends);
     set.zfail[m] = volume.zfail;
-    set.may_contain_eye[m] = mayContainNearPlane(view, centre, mesh.bounds());
+    set.may_contain_eye[m] = mayContainNearPlane(view, centre, scene.meshes[m].bounds());
   }
-  // In parallel: each projection divides in double, and the edges' vertices lie anywhere in the
-  // eye pass's array (fractal's 10,306 segments took 0.3 ms in one thread).
-  set.silhouettes.resize(segment_ends.size());
-  constexpr size_t kSegmentChunk = 2048;
-  parallelFor((segment_ends.size() + kSegmentChunk - 1) / kSegmentChunk, [&](size_t chunk) {
-    const size_t end = std::min(segment_ends.size(), (chunk + 1) * kSegmentChunk);
-    for (size_t i = chunk * kSegmentChunk; i < end; ++i)
-      set.silhouettes[i] = screenSegment(eye.clip_vertices[segment_ends[i][0]],
-                                         eye.clip_vertices[segment_ends[i][1]], view);
-  });
+  projectSilhouettes(segment_ends, eye, view, set);
   std::vector<VanishedPiece> vanished;
   set.triangles = setupTriangles(polygons, view.width, view.height, nullptr, &vanished);
   stats.triangles += set.triangles.size();
   indexVanishedPieces(polygons, std::move(vanished), set);
-  set.begin.assign(meshes + 1, 0);
-  set.depth_min.assign(meshes, 1.0f);
-  set.depth_max.assign(meshes, 0.0f);
-  for (const SetupTriangle& t : set.triangles) {
-    const uint32_t v = t.owners[1];
-    ++set.begin[v + 1];
-    set.depth_min[v] = std::min(set.depth_min[v], t.depth_min);
-    set.depth_max[v] = std::max(set.depth_max[v], t.depth_max);
-  }
-  for (size_t m = 0; m < meshes; ++m) set.begin[m + 1] += set.begin[m];
+  findVolumeRanges(meshes, set);
   return set;
 }
 

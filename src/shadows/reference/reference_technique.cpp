@@ -54,11 +54,151 @@ class Oracle final : public PreparedTechnique {
   EmbreeScene bvh_;
 };
 
+// One render's rows of shadow rays: everything a row's work shares. One work item per row.
+class OracleRows {
+ public:
+  OracleRows(const Light& light, const ReferenceOptions& options, const EmbreeScene& bvh,
+             const RayOrigins& origins, const EyeBuffers& eye, bool simd, bool hard,
+             Image<float>& visibility, ChannelVisibility& channels)
+      : light_(light), options_(options), bvh_(bvh), origins_(origins), eye_(eye),
+        visibility_(visibility), channels_(channels), simd_(simd),
+        n_(hard ? 1 : options.rays), center_(light.center), radius_(light.radius),
+        planar_(light.shape != LightShape::Sphere),
+        textured_(!hard && light.texture != nullptr) {}
+
+  // One ray per pixel to the light centre; a row's rays converge on it, so they make coherent
+  // packets.
+  void traceHardRow(int y, RowCounters& counters) const {
+    const float* depth = eye_.depth.depth.row(y);
+    const uint32_t* primitive = eye_.primitive.empty() ? nullptr : eye_.primitive.row(y);
+    float* visibility = visibility_.row(y);
+    std::vector<ShadowRay> rays;
+    std::vector<uint8_t> blocked;
+    OriginTriangle triangle;  // the row's last visible triangle (RayOrigins::start)
+    std::vector<int> columns;
+    for (int x = 0; x < eye_.depth.width(); ++x) {
+      if (!(depth[x] > 0.0f)) continue;  // background (depth 0) stays fully lit
+      ++counters.z_reads;
+      const RayStart start =
+          origins_.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive, triangle);
+      const dvec3 to_light = center_ - start.origin;
+      const double distance = glm::length(to_light);
+      if (distance == 0.0) continue;  // the light sits on the point: nothing in between
+      ++counters.rays;
+      if (start.intoSurface(center_)) {
+        visibility[x] = 0.0f;
+        continue;
+      }
+      rays.push_back(makeRay(vec3(start.origin), vec3(to_light / distance), distance));
+      columns.push_back(x);
+    }
+    blocked.resize(rays.size());
+    bvh_.occluded(rays.data(), rays.size(), simd_, blocked.data());
+    for (size_t i = 0; i < rays.size(); ++i) visibility[columns[i]] = blocked[i] ? 0.0f : 1.0f;
+  }
+
+  // n rays per pixel over the light; visibility is the fraction not blocked (per channel, the
+  // texture-weighted fraction, for a textured light).
+  void traceSoftRow(int y, RowCounters& counters) const {
+    const float* depth = eye_.depth.depth.row(y);
+    const uint32_t* primitive = eye_.primitive.empty() ? nullptr : eye_.primitive.row(y);
+    float* visibility = visibility_.row(y);
+    OriginTriangle triangle;  // the row's last visible triangle (RayOrigins::start)
+    std::vector<vec2> samples(static_cast<size_t>(n_));
+    std::vector<int> sample_of(static_cast<size_t>(n_));  // a traced ray's sample
+    const bool fixed = options_.samples == SampleSet::Fixed;
+    if (fixed) fixedSamples(n_, options_.seed, samples.data());
+    std::vector<ShadowRay> rays(static_cast<size_t>(n_));
+    std::vector<uint8_t> blocked(static_cast<size_t>(n_));
+    for (int x = 0; x < eye_.depth.width(); ++x) {
+      if (!(depth[x] > 0.0f)) continue;
+      ++counters.z_reads;
+      const RayStart start =
+          origins_.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive, triangle);
+      if (!fixed) stratifiedSamples(n_, options_.seed, uint32_t(x), uint32_t(y), samples.data());
+      size_t traced = 0;
+      if (planar_) {
+        traced = aimAtPlanarLight(start, samples, rays, sample_of);
+      } else if (glm::length(center_ - start.origin) <= radius_) {
+        continue;  // a point inside the light sees all of it
+      } else {
+        traced = aimAtSphereLight(start, samples, rays);
+      }
+      bvh_.occluded(rays.data(), traced, simd_, blocked.data());
+      int unblocked = 0;
+      for (size_t k = 0; k < traced; ++k) unblocked += blocked[k] ? 0 : 1;
+      visibility[x] = float(unblocked) / float(n_);
+      counters.rays += uint64_t(n_);
+      if (textured_) weighByTexture(x, y, samples, sample_of, blocked, traced);
+    }
+  }
+
+ private:
+  // Disk and rectangle lights: rays to points uniform in the light's area (light.h:
+  // visibility is the fraction of the area seen). Returns the rays traced.
+  size_t aimAtPlanarLight(const RayStart& start, const std::vector<vec2>& samples,
+                          std::vector<ShadowRay>& rays, std::vector<int>& sample_of) const {
+    const vec3 origin(start.origin);
+    size_t traced = 0;
+    for (int k = 0; k < n_; ++k) {
+      const dvec3 target = planarLightPoint(light_, samples[size_t(k)]);
+      const dvec3 to_target = target - start.origin;
+      const double distance = glm::length(to_target);
+      if (!(distance > 0.0)) continue;  // the point is on the light: nothing in between
+      if (start.intoSurface(target)) continue;
+      sample_of[traced] = k;
+      rays[traced++] = makeRay(origin, vec3(to_target / distance), distance);
+    }
+    return traced;
+  }
+
+  // A sphere light: rays over the cone it fills seen from the point. Returns the rays traced.
+  size_t aimAtSphereLight(const RayStart& start, const std::vector<vec2>& samples,
+                          std::vector<ShadowRay>& rays) const {
+    const vec3 origin(start.origin);
+    size_t traced = 0;
+    const SphereCone cone = makeSphereCone(start.origin, center_, radius_);
+    for (int k = 0; k < n_; ++k) {
+      const ConeSample s = sampleSphereCone(cone, concentricDisk(samples[size_t(k)]));
+      if (start.intoSurface(start.origin + dvec3(s.direction) * double(s.distance))) {
+        continue;  // blocked by the surface itself
+      }
+      rays[traced++] = makeRay(origin, s.direction, s.distance);
+    }
+    return traced;
+  }
+
+  // Each sample weighs what the texture emits there; samples not traced (behind the surface)
+  // count as blocked, as in traceSoftRow.
+  void weighByTexture(int x, int y, const std::vector<vec2>& samples,
+                      const std::vector<int>& sample_of, const std::vector<uint8_t>& blocked,
+                      size_t traced) const {
+    dvec3 seen(0.0), all(0.0);
+    for (int k = 0; k < n_; ++k) all += dvec3(light_.texture->at(samples[size_t(k)]));
+    for (size_t k = 0; k < traced; ++k) {
+      if (!blocked[k]) seen += dvec3(light_.texture->at(samples[size_t(sample_of[k])]));
+    }
+    for (int c = 0; c < 3; ++c) {
+      channels_[size_t(c)].at(x, y) = all[c] > 0.0 ? float(seen[c] / all[c]) : 1.0f;
+    }
+  }
+
+  const Light& light_;
+  const ReferenceOptions& options_;
+  const EmbreeScene& bvh_;
+  const RayOrigins& origins_;
+  const EyeBuffers& eye_;
+  Image<float>& visibility_;
+  ChannelVisibility& channels_;
+  const bool simd_;
+  const int n_;
+  const dvec3 center_;
+  const double radius_;
+  const bool planar_, textured_;
+};
+
 TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBuffers& eye,
                                const RenderContext& context) const {
-  const Scene& scene = scene_;
-  const ReferenceOptions& options = options_;
-  const EmbreeScene* bvh = &bvh_;
   PENUMBRA_CHECK(isFinite(light.center), "light centre is not finite");
   PENUMBRA_CHECK(std::isfinite(light.radius) && light.radius >= 0.0f,
                  "light radius {} must be a finite number >= 0", light.radius);
@@ -73,7 +213,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
                  "eye primitive ids are {}x{} but the depth buffer is {}x{}",
                  eye.primitive.width(), eye.primitive.height(), width, height);
 
-  const RayOrigins origins(scene, view);
+  const RayOrigins origins(scene_, view);
   origins.checkPrimitiveIds(eye.primitive);
 
   TechniqueResult result;
@@ -81,11 +221,7 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
   Stats& stats = result.stats;
 
   PassTimer timer(stats, "reference");
-  const bool hard = options.hard || light.radius == 0.0f;
-  const int n = hard ? 1 : options.rays;
-  const dvec3 center(light.center);
-  const double radius = light.radius;
-  const bool planar = light.shape != LightShape::Sphere;
+  const bool hard = options_.hard || light.radius == 0.0f;
   std::vector<RowCounters> row_counters(static_cast<size_t>(height));
   // A textured light (light.h): each sample weighs the texel it lands on, per channel.
   const bool textured = !hard && light.texture != nullptr;
@@ -94,101 +230,15 @@ TechniqueResult Oracle::render(const Light& light, const View& view, const EyeBu
     for (Image<float>& c : channels) c.resize(width, height, 1.0f);
   }
   ProgressBar progress("reference", uint64_t(height), context.show_progress);
-
+  const OracleRows rows(light, options_, bvh_, origins, eye, context.simd, hard,
+                        result.visibility, channels);
   // One work item per row: rows never share pixels, each pixel's rays are a function of the
   // pixel alone, and counters are summed in row order, so results do not depend on threads.
   parallelFor(size_t(height), [&](size_t row) {
-    const int y = int(row);
-    const float* depth = eye.depth.depth.row(y);
-    const uint32_t* primitive = eye.primitive.empty() ? nullptr : eye.primitive.row(y);
-    float* visibility = result.visibility.row(y);
-    RowCounters& counters = row_counters[row];
-    std::vector<ShadowRay> rays;
-    std::vector<uint8_t> blocked;
-    OriginTriangle triangle;  // the row's last visible triangle (RayOrigins::start)
-
     if (hard) {
-      // One ray per pixel to the light centre; a row's rays converge on it, so they make
-      // coherent packets.
-      std::vector<int> columns;
-      for (int x = 0; x < width; ++x) {
-        if (!(depth[x] > 0.0f)) continue;  // background (depth 0) stays fully lit
-        ++counters.z_reads;
-        const RayStart start =
-            origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive, triangle);
-        const dvec3 to_light = center - start.origin;
-        const double distance = glm::length(to_light);
-        if (distance == 0.0) continue;  // the light sits on the point: nothing in between
-        ++counters.rays;
-        if (start.intoSurface(center)) {
-          visibility[x] = 0.0f;
-          continue;
-        }
-        rays.push_back(makeRay(vec3(start.origin), vec3(to_light / distance), distance));
-        columns.push_back(x);
-      }
-      blocked.resize(rays.size());
-      bvh->occluded(rays.data(), rays.size(), context.simd, blocked.data());
-      for (size_t i = 0; i < rays.size(); ++i) visibility[columns[i]] = blocked[i] ? 0.0f : 1.0f;
-      progress.add();
-      return;
-    }
-
-    std::vector<vec2> samples(static_cast<size_t>(n));
-    std::vector<int> sample_of(static_cast<size_t>(n));  // a traced ray's sample
-    const bool fixed = options.samples == SampleSet::Fixed;
-    if (fixed) fixedSamples(n, options.seed, samples.data());
-    rays.resize(size_t(n));
-    blocked.resize(size_t(n));
-    for (int x = 0; x < width; ++x) {
-      if (!(depth[x] > 0.0f)) continue;
-      ++counters.z_reads;
-      const RayStart start =
-          origins.start(x, y, depth[x], primitive ? primitive[x] : kNoPrimitive, triangle);
-      if (!fixed) stratifiedSamples(n, options.seed, uint32_t(x), uint32_t(y), samples.data());
-      const vec3 origin(start.origin);
-      size_t traced = 0;
-      if (planar) {
-        // Disk and rectangle lights: rays to points uniform in the light's area (light.h:
-        // visibility is the fraction of the area seen).
-        for (int k = 0; k < n; ++k) {
-          const dvec3 target = planarLightPoint(light, samples[size_t(k)]);
-          const dvec3 to_target = target - start.origin;
-          const double distance = glm::length(to_target);
-          if (!(distance > 0.0)) continue;  // the point is on the light: nothing in between
-          if (start.intoSurface(target)) continue;
-          sample_of[traced] = k;
-          rays[traced++] = makeRay(origin, vec3(to_target / distance), distance);
-        }
-      } else {
-        // A point inside the light sees all of it.
-        if (glm::length(center - start.origin) <= radius) continue;
-        const SphereCone cone = makeSphereCone(start.origin, center, radius);
-        for (int k = 0; k < n; ++k) {
-          const ConeSample s = sampleSphereCone(cone, concentricDisk(samples[size_t(k)]));
-          if (start.intoSurface(start.origin + dvec3(s.direction) * double(s.distance))) {
-            continue;  // blocked by the surface itself
-          }
-          rays[traced++] = makeRay(origin, s.direction, s.distance);
-        }
-      }
-      bvh->occluded(rays.data(), traced, context.simd, blocked.data());
-      int unblocked = 0;
-      for (size_t k = 0; k < traced; ++k) unblocked += blocked[k] ? 0 : 1;
-      visibility[x] = float(unblocked) / float(n);
-      counters.rays += uint64_t(n);
-      if (textured) {
-        // Each sample weighs what the texture emits there; samples not traced (behind the
-        // surface) count as blocked, as above.
-        dvec3 seen(0.0), all(0.0);
-        for (int k = 0; k < n; ++k) all += dvec3(light.texture->at(samples[size_t(k)]));
-        for (size_t k = 0; k < traced; ++k) {
-          if (!blocked[k]) seen += dvec3(light.texture->at(samples[size_t(sample_of[k])]));
-        }
-        for (int c = 0; c < 3; ++c) {
-          channels[size_t(c)].at(x, y) = all[c] > 0.0 ? float(seen[c] / all[c]) : 1.0f;
-        }
-      }
+      rows.traceHardRow(int(row), row_counters[row]);
+    } else {
+      rows.traceSoftRow(int(row), row_counters[row]);
     }
     progress.add();
   });

@@ -96,17 +96,63 @@ dvec4 cross4(const dvec4& a, const dvec4& b, const dvec4& c) {
                -det3(dvec3(a.x, a.y, a.z), dvec3(b.x, b.y, b.z), dvec3(c.x, c.y, c.z)));
 }
 
-WedgeHull wedgeHull(const Wedge& w) {
-  const Plane* planes[4] = {&w.front, &w.back, &w.left, &w.right};
+// The wedge's planes and the plane at infinity as the hull's five constraints (indexed by
+// WedgeFace), each a homogeneous vector c with c . (p, 1) >= 0 inside.
+struct WedgeConstraints {
+  explicit WedgeConstraints(const Wedge& w)
+      : planes{&w.front, &w.back, &w.left, &w.right},
+        extent(glm::length(w.a) + glm::length(w.b - w.a)) {
+    for (int k = 0; k < 4; ++k) constraint[k] = dvec4(planes[k]->n, planes[k]->d);
+    constraint[kFar] = dvec4(0.0, 0.0, 0.0, 1.0);
+  }
+  const Plane* planes[4];
   dvec4 constraint[5];
-  for (int k = 0; k < 4; ++k) constraint[k] = dvec4(planes[k]->n, planes[k]->d);
-  constraint[kFar] = dvec4(0.0, 0.0, 0.0, 1.0);
   // Plane values are distances (unit normals); rounding in them grows with the coordinates.
-  const double extent = glm::length(w.a) + glm::length(w.b - w.a);
-  const auto tolerance = [&](const dvec3& p) { return 1e-9 * (extent + glm::length(p - w.a)); };
-  constexpr double kDirectionTolerance = 1e-9;
+  double extent;
+};
 
-  WedgeHull hull;
+// Adds the feasible point or direction x (unit length), the meeting point of the constraints
+// `triple`, to the hull's vertices: its sign fitted, the constraints it lies on set, merged
+// with a vertex found before from another triple.
+void addHullVertex(const Wedge& w, const WedgeConstraints& wc, const dvec4& x, uint8_t triple,
+                   bool direction, WedgeHull& hull) {
+  const auto tolerance = [&](const dvec3& p) {
+    return 1e-9 * (wc.extent + glm::length(p - w.a));
+  };
+  constexpr double kDirectionTolerance = 1e-9;
+  for (const double sign : {1.0, -1.0}) {
+    dvec4 h = sign * x;
+    if (direction) {
+      h.w = 0.0;
+      h /= glm::length(h);
+    } else if (h.w < 0.0) {
+      continue;
+    }
+    const dvec3 p = direction ? dvec3(h) : dvec3(h) / h.w;
+    uint8_t on = uint8_t(triple | (direction ? 1u << kFar : 0u));
+    bool feasible = true;
+    for (int m = 0; m < 4 && feasible; ++m) {
+      const double value = direction ? glm::dot(wc.planes[m]->n, p) : wc.planes[m]->eval(p);
+      const double tol = direction ? kDirectionTolerance : tolerance(p);
+      feasible = value >= -tol;
+      if (std::fabs(value) <= tol) on = uint8_t(on | (1u << m));
+    }
+    if (!feasible) continue;
+    bool merged = false;
+    for (HullVertex& v : hull.vertices) {
+      if (glm::length(v.h - h) <= 1e-12) {
+        v.on = uint8_t(v.on | on);
+        merged = true;
+      }
+    }
+    if (!merged) hull.vertices.push_back(HullVertex{h, on, p});
+    return;
+  }
+}
+
+// The hull's vertices (section 6: the points inside all the wedge's planes): the feasible
+// intersections of three of the five constraints.
+void findHullVertices(const Wedge& w, const WedgeConstraints& wc, WedgeHull& hull) {
   // A gap wedge (wedge_gap.h, a == b) is a cone: all four planes pass through its apex, which
   // is then its only finite vertex. Solving for it from four different triples gives four
   // copies that differ by more than the merge distance (front and back are nearly parallel),
@@ -117,6 +163,7 @@ WedgeHull wedgeHull(const Wedge& w) {
                                        uint8_t((1u << kFront) | (1u << kBack) | (1u << kLeft) |
                                                (1u << kRight)),
                                        w.a});
+  const dvec4* constraint = wc.constraint;
   for (int i = 0; i < 5; ++i)
     for (int j = i + 1; j < 5; ++j)
       for (int k = j + 1; k < 5; ++k) {
@@ -131,39 +178,13 @@ WedgeHull wedgeHull(const Wedge& w) {
         // A point (w > 0) or a direction (w = 0; also a point so far away that its w is
         // rounding noise): the sign of a direction is free, the one that fits is taken.
         const bool direction = k == kFar || std::fabs(x.w) <= 1e-12 * glm::length(dvec3(x));
-        bool found = false;
-        for (const double sign : {1.0, -1.0}) {
-          if (found) break;
-          dvec4 h = sign * x;
-          if (direction) {
-            h.w = 0.0;
-            h /= glm::length(h);
-          } else if (h.w < 0.0) {
-            continue;
-          }
-          const dvec3 p = direction ? dvec3(h) : dvec3(h) / h.w;
-          uint8_t on = uint8_t(triple | (direction ? 1u << kFar : 0u));
-          bool feasible = true;
-          for (int m = 0; m < 4 && feasible; ++m) {
-            const double value = direction ? glm::dot(planes[m]->n, p) : planes[m]->eval(p);
-            const double tol = direction ? kDirectionTolerance : tolerance(p);
-            feasible = value >= -tol;
-            if (std::fabs(value) <= tol) on = uint8_t(on | (1u << m));
-          }
-          if (!feasible) continue;
-          found = true;
-          bool merged = false;
-          for (HullVertex& v : hull.vertices) {
-            if (glm::length(v.h - h) <= 1e-12) {
-              v.on = uint8_t(v.on | on);
-              merged = true;
-            }
-          }
-          if (!merged) hull.vertices.push_back(HullVertex{h, on, p});
-        }
+        addHullVertex(w, wc, x, triple, direction, hull);
       }
+}
 
-  // Proxies: directions stand in far beyond every finite vertex.
+// Finite stand-ins for the hull's directions, far beyond every finite vertex; returns the
+// directions' sum (the mean direction of the face at infinity).
+dvec3 placeHullProxies(const Wedge& w, WedgeHull& hull) {
   double far = std::max(1.0, glm::length(w.b - w.a));
   for (const HullVertex& v : hull.vertices)
     if (v.h.w != 0.0) far = std::max(far, glm::length(v.proxy - w.a));
@@ -175,31 +196,45 @@ WedgeHull wedgeHull(const Wedge& w) {
       v.proxy = w.a + far * v.proxy;
     }
   }
+  return mean_direction;
+}
+
+// The vertices on constraint k ordered around it (by pseudo-angle about their centre, in the
+// plane of normal n); a face of fewer than 3 is cleared.
+void orderHullFace(const WedgeHull& hull, int k, const dvec3& n, std::vector<uint32_t>& face) {
+  for (uint32_t v = 0; v < hull.vertices.size(); ++v)
+    if (hull.vertices[v].on & (1u << k)) face.push_back(v);
+  if (face.size() < 3) {
+    face.clear();
+    return;
+  }
+  dvec3 centre(0.0);
+  for (uint32_t v : face) centre += hull.vertices[v].proxy;
+  centre /= double(face.size());
+  const dvec3 axis = std::fabs(n.x) < 0.6 * glm::length(n) ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+  const dvec3 u = glm::normalize(glm::cross(n, axis));
+  const dvec3 t = glm::cross(n, u);
+  std::vector<std::pair<double, uint32_t>> angle;
+  for (uint32_t v : face) {
+    const dvec3 d = hull.vertices[v].proxy - centre;
+    angle.emplace_back(pseudoAngle(glm::dot(d, u), glm::dot(d, t)), v);
+  }
+  std::sort(angle.begin(), angle.end());
+  for (size_t i = 0; i < face.size(); ++i) face[i] = angle[i].second;
+}
+
+WedgeHull wedgeHull(const Wedge& w) {
+  const WedgeConstraints wc(w);
+  WedgeHull hull;
+  findHullVertices(w, wc, hull);
+  const dvec3 mean_direction = placeHullProxies(w, hull);
   hull.far_outward = mean_direction;
   hull.faces.resize(5);
   size_t edges2 = 0, face_count = 0;
   for (int k = 0; k < 5; ++k) {
     std::vector<uint32_t>& face = hull.faces[size_t(k)];
-    for (uint32_t v = 0; v < hull.vertices.size(); ++v)
-      if (hull.vertices[v].on & (1u << k)) face.push_back(v);
-    if (face.size() < 3) {
-      face.clear();
-      continue;
-    }
-    const dvec3 n = k == kFar ? mean_direction : planes[k]->n;
-    dvec3 centre(0.0);
-    for (uint32_t v : face) centre += hull.vertices[v].proxy;
-    centre /= double(face.size());
-    const dvec3 axis = std::fabs(n.x) < 0.6 * glm::length(n) ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
-    const dvec3 u = glm::normalize(glm::cross(n, axis));
-    const dvec3 t = glm::cross(n, u);
-    std::vector<std::pair<double, uint32_t>> angle;
-    for (uint32_t v : face) {
-      const dvec3 d = hull.vertices[v].proxy - centre;
-      angle.emplace_back(pseudoAngle(glm::dot(d, u), glm::dot(d, t)), v);
-    }
-    std::sort(angle.begin(), angle.end());
-    for (size_t i = 0; i < face.size(); ++i) face[i] = angle[i].second;
+    orderHullFace(hull, k, k == kFar ? mean_direction : wc.planes[k]->n, face);
+    if (face.empty()) continue;
     edges2 += face.size();
     ++face_count;
   }
@@ -303,25 +338,11 @@ MeshWedges prepareMesh(const LightWedgesOptions& options, const Scene& scene, si
   return p;
 }
 
-}  // namespace
-
-LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& scene,
-                           const Light& light, const View& view, const EyeBuffers& eye) {
-  LightWedges f;
-  f.triangles = ClipTriangles(eye.clip_vertices);
-  LightWedgesBuilder out(f, view);
-  const bool soft = light.radius > 0.0f;
-  const ScreenProjection projection = screenProjection(view);
-  std::vector<MeshWedges> prepared(scene.meshes.size());
-  // The other facing's pass draws only the meshes it was given.
-  auto casts = [&](size_t m) {
-    return options.other_facing_meshes == nullptr || (*options.other_facing_meshes)[m] != 0;
-  };
-  parallelFor(scene.meshes.size(), [&](size_t m) {
-    if (casts(m)) prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);
-  });
-  // The nearest edge the light reaches (the first mesh's on a tie, whatever the thread count):
-  // its distance is the largest radius the light's wedges could take.
+// A silhouette edge the light reaches refuses the light: the nearest such edge (the first
+// mesh's on a tie, whatever the thread count) is named, its distance being the largest radius
+// the light's wedges could take.
+void refuseEdgeInsideLight(const Scene& scene, const Light& light,
+                           const std::vector<MeshWedges>& prepared) {
   size_t reached = scene.meshes.size();
   for (size_t m = 0; m < scene.meshes.size(); ++m)
     if (prepared[m].inside_light &&
@@ -331,126 +352,162 @@ LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& sce
   if (reached < scene.meshes.size())
     throw Error(
         edgeInsideLightMessage(scene.meshes[reached], light, *prepared[reached].inside_light));
-  for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    if (!casts(m)) continue;
-    const Mesh& mesh = scene.meshes[m];
-    MeshWedges& p = prepared[m];
-    const WedgeSet& ws = p.ws;
-    const std::vector<WedgeHull>& hulls = p.hulls;
-    const bool zfail = p.volume.zfail;
-    f.silhouette_edges += p.volume.silhouette.edges.size();
-    f.junction_vertices += ws.junction_vertices;
+}
 
-    appendExtrudedVertices(mesh, light.center, view, p.volume, f.triangles);
-    const uint32_t base = p.volume.finite, infinite = p.volume.infinite;
-    auto finite = [&](uint32_t v) { return base + v; };
-    auto hard_infinity = [&](uint32_t v) { return infinite + v; };
-
-    const size_t n_wedges = p.wedgeCount();
-    // Which umbra quads are also the front face of a wedge: the unit edge's quad, when the
-    // front rays do not cross (the front face is then a, b and the two front directions).
-    std::vector<int32_t> front_face_of(ws.umbra.size(), kNoWedge);
-    std::vector<int32_t> global_wedge(n_wedges, kNoWedge);
-    if (soft) {
-      int32_t next = int32_t(f.wedges.size());
-      for (size_t i = 0; i < n_wedges; ++i) {
-        const Wedge& w = p.wedge(i);
-        if (w.flat) continue;
-        if (!hulls[i].valid) {
-          ++f.degenerate_wedges;
-          continue;
-        }
-        global_wedge[i] = next++;
-        f.wedges.push_back(w);
-        f.screen.push_back(p.screens[i]);
-        if (p.screens[i].front_quad) front_face_of[w.unit_edge] = global_wedge[i];
-      }
+// A mesh's valid wedges appended to the light's, numbered globally (global_wedge, per wedge of
+// the mesh); front_face_of marks the umbra quads that are also the front face of a wedge: the
+// unit edge's quad, when the front rays do not cross (the front face is then a, b and the two
+// front directions).
+void numberMeshWedges(const MeshWedges& p, LightWedges& f, std::vector<int32_t>& front_face_of,
+                      std::vector<int32_t>& global_wedge) {
+  int32_t next = int32_t(f.wedges.size());
+  for (size_t i = 0; i < p.wedgeCount(); ++i) {
+    const Wedge& w = p.wedge(i);
+    if (w.flat) continue;
+    if (!p.hulls[i].valid) {
+      ++f.degenerate_wedges;
+      continue;
     }
+    global_wedge[i] = next++;
+    f.wedges.push_back(w);
+    f.screen.push_back(p.screens[i]);
+    if (p.screens[i].front_quad) front_face_of[w.unit_edge] = global_wedge[i];
+  }
+}
 
-    // Umbra quads, in the hard shadow volume's vertex order and sign convention
-    // (shadows/stages/stencil/shadow_stencil.cpp: (v1, v0, v0', v1') with v0 < v1 and a signed
-    // weight).
-    std::vector<uint32_t> inf_a(ws.umbra.size()), inf_b(ws.umbra.size());
-    for (size_t k = 0; k < ws.umbra.size(); ++k) {
-      const UmbraQuad& q = ws.umbra[k];
-      inf_a[k] = out.vertex(vec4(q.inf_a, 0.0f));
-      inf_b[k] = out.vertex(vec4(q.inf_b, 0.0f));
-      const bool forward = q.va < q.vb;
-      const uint32_t v0 = forward ? q.va : q.vb, v1 = forward ? q.vb : q.va;
-      const uint32_t i0 = forward ? inf_a[k] : inf_b[k], i1 = forward ? inf_b[k] : inf_a[k];
-      const int32_t weight = forward ? 1 : -1;
-      WedgeRole role;
-      role.umbra_weight = weight;
-      role.wedge = front_face_of[k];
-      role.face_sign = int8_t(weight);
-      role.face = role.wedge != kNoWedge ? kFront : -1;
-      role.zfail = zfail;
-      out.triangle(finite(v1), finite(v0), i0, role);
-      out.triangle(finite(v1), i0, i1, role);
-      if (zfail) {
-        // Skirt at infinity between the hard volume's directions and the front-plane ones:
-        // light caps + front quads + skirts + hard dark caps form a closed surface (with r = 0
-        // the skirts have no area and this is the hard shadow volume).
-        WedgeRole skirt;
-        skirt.umbra_weight = weight;
-        skirt.zfail = true;
-        out.triangle(i0, hard_infinity(v0), hard_infinity(v1), skirt);
-        out.triangle(i0, hard_infinity(v1), i1, skirt);
-      }
-    }
+// The umbra quads (2002 paper, section 4: the hard shadow volume of the front planes), in the hard
+// shadow volume's vertex order and sign convention (shadows/stages/stencil/shadow_stencil.cpp: (v1,
+// v0, v0', v1') with v0 < v1 and a signed weight), with z-fail's skirts; their vertices at infinity
+// kept in inf_a and inf_b (per umbra quad) for the wedges' front faces.
+void appendUmbraQuads(const MeshWedges& p, const std::vector<int32_t>& front_face_of,
+                      LightWedgesBuilder& out, std::vector<uint32_t>& inf_a,
+                      std::vector<uint32_t>& inf_b) {
+  const WedgeSet& ws = p.ws;
+  const bool zfail = p.volume.zfail;
+  const uint32_t base = p.volume.finite, infinite = p.volume.infinite;
+  for (size_t k = 0; k < ws.umbra.size(); ++k) {
+    const UmbraQuad& q = ws.umbra[k];
+    inf_a[k] = out.vertex(vec4(q.inf_a, 0.0f));
+    inf_b[k] = out.vertex(vec4(q.inf_b, 0.0f));
+    const bool forward = q.va < q.vb;
+    const uint32_t v0 = forward ? q.va : q.vb, v1 = forward ? q.vb : q.va;
+    const uint32_t i0 = forward ? inf_a[k] : inf_b[k], i1 = forward ? inf_b[k] : inf_a[k];
+    const int32_t weight = forward ? 1 : -1;
+    WedgeRole role;
+    role.umbra_weight = weight;
+    role.wedge = front_face_of[k];
+    role.face_sign = int8_t(weight);
+    role.face = role.wedge != kNoWedge ? kFront : -1;
+    role.zfail = zfail;
+    out.triangle(base + v1, base + v0, i0, role);
+    out.triangle(base + v1, i0, i1, role);
     if (zfail) {
-      // Light caps (the casters themselves) and dark caps at infinity (caster_volume.h).
-      forEachCap(mesh, p.volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
-        WedgeRole cap;
-        cap.umbra_weight = weight;
-        cap.zfail = true;
-        out.triangle(a, b, c, cap);
-      });
-    }
-
-    // The other faces of every wedge polyhedron (the penumbra footprint). Its corners on the
-    // occluder are the mesh's own vertices and, when the front face is the umbra quad, its
-    // front directions are the quad's: shared clip vertices keep the faces watertight.
-    for (size_t i = 0; i < n_wedges; ++i) {
-      if (global_wedge[i] == kNoWedge) continue;
-      const Wedge& w = p.wedge(i);
-      const WedgeHull& hull = hulls[i];
-      const bool quad = f.screen[size_t(global_wedge[i])].front_quad;
-      const auto on = [](const HullVertex& v, std::initializer_list<int> faces) {
-        for (const int k : faces)
-          if (!(v.on & (1u << k))) return false;
-        return true;
-      };
-      std::vector<uint32_t> clip(hull.vertices.size());
-      for (size_t v = 0; v < hull.vertices.size(); ++v) {
-        const HullVertex& hv = hull.vertices[v];
-        const bool point = hv.h.w != 0.0;
-        if (point && on(hv, {kFront, kBack, kLeft})) {
-          clip[v] = finite(w.va);
-        } else if (point && on(hv, {kFront, kBack, kRight})) {
-          clip[v] = finite(w.vb);
-        } else if (quad && !point && on(hv, {kFront, kLeft})) {
-          clip[v] = inf_a[w.unit_edge];
-        } else if (quad && !point && on(hv, {kFront, kRight})) {
-          clip[v] = inf_b[w.unit_edge];
-        } else {
-          clip[v] = out.vertex(vec4(hv.h));
-        }
-      }
-      WedgeRole role;
-      role.wedge = global_wedge[i];
-      role.zfail = zfail;
-      const Plane* planes[4] = {&w.front, &w.back, &w.left, &w.right};
-      for (int k = 0; k < 5; ++k) {
-        const std::vector<uint32_t>& face = hull.faces[size_t(k)];
-        if (face.empty() || (k == kFront && quad)) continue;
-        std::vector<Corner> corners;
-        for (const uint32_t v : face) corners.push_back(Corner{clip[v], hull.vertices[v].proxy});
-        out.polygon(corners, k == kFar ? hull.far_outward : -planes[k]->n,
-                    withFace(role, WedgeFace(k)));
-      }
+      // Skirt at infinity between the hard volume's directions and the front-plane ones:
+      // light caps + front quads + skirts + hard dark caps form a closed surface (with r = 0
+      // the skirts have no area and this is the hard shadow volume).
+      WedgeRole skirt;
+      skirt.umbra_weight = weight;
+      skirt.zfail = true;
+      out.triangle(i0, infinite + v0, infinite + v1, skirt);
+      out.triangle(i0, infinite + v1, i1, skirt);
     }
   }
+}
+
+// The other faces of one wedge polyhedron (the penumbra footprint; section 6's four planes and
+// the plane at infinity). Its corners on the occluder are the mesh's own vertices and, when
+// the front face is the umbra quad, its front directions are the quad's: shared clip vertices
+// keep the faces watertight.
+void appendWedgeFaces(const MeshWedges& p, size_t i, int32_t global, bool quad,
+                      const std::vector<uint32_t>& inf_a, const std::vector<uint32_t>& inf_b,
+                      LightWedgesBuilder& out) {
+  const Wedge& w = p.wedge(i);
+  const WedgeHull& hull = p.hulls[i];
+  const uint32_t base = p.volume.finite;
+  const auto on = [](const HullVertex& v, std::initializer_list<int> faces) {
+    for (const int k : faces)
+      if (!(v.on & (1u << k))) return false;
+    return true;
+  };
+  std::vector<uint32_t> clip(hull.vertices.size());
+  for (size_t v = 0; v < hull.vertices.size(); ++v) {
+    const HullVertex& hv = hull.vertices[v];
+    const bool point = hv.h.w != 0.0;
+    if (point && on(hv, {kFront, kBack, kLeft})) {
+      clip[v] = base + w.va;
+    } else if (point && on(hv, {kFront, kBack, kRight})) {
+      clip[v] = base + w.vb;
+    } else if (quad && !point && on(hv, {kFront, kLeft})) {
+      clip[v] = inf_a[w.unit_edge];
+    } else if (quad && !point && on(hv, {kFront, kRight})) {
+      clip[v] = inf_b[w.unit_edge];
+    } else {
+      clip[v] = out.vertex(vec4(hv.h));
+    }
+  }
+  WedgeRole role;
+  role.wedge = global;
+  role.zfail = p.volume.zfail;
+  const Plane* planes[4] = {&w.front, &w.back, &w.left, &w.right};
+  for (int k = 0; k < 5; ++k) {
+    const std::vector<uint32_t>& face = hull.faces[size_t(k)];
+    if (face.empty() || (k == kFront && quad)) continue;
+    std::vector<Corner> corners;
+    for (const uint32_t v : face) corners.push_back(Corner{clip[v], hull.vertices[v].proxy});
+    out.polygon(corners, k == kFar ? hull.far_outward : -planes[k]->n,
+                withFace(role, WedgeFace(k)));
+  }
+}
+
+// One mesh's part of the light's wedges: its extruded vertices, umbra quads, caps (z-fail)
+// and wedge faces.
+void appendMeshWedges(const Mesh& mesh, MeshWedges& p, const Light& light, const View& view,
+                      LightWedges& f, LightWedgesBuilder& out) {
+  const WedgeSet& ws = p.ws;
+  f.silhouette_edges += p.volume.silhouette.edges.size();
+  f.junction_vertices += ws.junction_vertices;
+  appendExtrudedVertices(mesh, light.center, view, p.volume, f.triangles);
+  const size_t n_wedges = p.wedgeCount();
+  std::vector<int32_t> front_face_of(ws.umbra.size(), kNoWedge);
+  std::vector<int32_t> global_wedge(n_wedges, kNoWedge);
+  if (light.radius > 0.0f) numberMeshWedges(p, f, front_face_of, global_wedge);
+  std::vector<uint32_t> inf_a(ws.umbra.size()), inf_b(ws.umbra.size());
+  appendUmbraQuads(p, front_face_of, out, inf_a, inf_b);
+  if (p.volume.zfail) {
+    // Light caps (the casters themselves) and dark caps at infinity (caster_volume.h).
+    forEachCap(mesh, p.volume, [&](uint32_t a, uint32_t b, uint32_t c, int32_t weight) {
+      WedgeRole cap;
+      cap.umbra_weight = weight;
+      cap.zfail = true;
+      out.triangle(a, b, c, cap);
+    });
+  }
+  for (size_t i = 0; i < n_wedges; ++i) {
+    if (global_wedge[i] == kNoWedge) continue;
+    appendWedgeFaces(p, i, global_wedge[i], f.screen[size_t(global_wedge[i])].front_quad, inf_a,
+                     inf_b, out);
+  }
+}
+
+}  // namespace
+
+LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& scene,
+                           const Light& light, const View& view, const EyeBuffers& eye) {
+  LightWedges f;
+  f.triangles = ClipTriangles(eye.clip_vertices);
+  LightWedgesBuilder out(f, view);
+  const ScreenProjection projection = screenProjection(view);
+  std::vector<MeshWedges> prepared(scene.meshes.size());
+  // The other facing's pass draws only the meshes it was given.
+  auto casts = [&](size_t m) {
+    return options.other_facing_meshes == nullptr || (*options.other_facing_meshes)[m] != 0;
+  };
+  parallelFor(scene.meshes.size(), [&](size_t m) {
+    if (casts(m)) prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);
+  });
+  refuseEdgeInsideLight(scene, light, prepared);
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    if (casts(m)) appendMeshWedges(scene.meshes[m], prepared[m], light, view, f, out);
   return f;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "core/error.h"
 #include "shadows/wedge/wedge_gap.h"
@@ -79,6 +80,272 @@ struct WedgeEnd {
   uint32_t neighbour = kNoWedgeLink;  // unit edge whose wedge shares the plane
 };
 
+// The wedges and umbra quads of one silhouette (2002 paper, section 4.1, as the comment above
+// describes): the side planes at each vertex pairing, then the wedges, then the quads. One
+// object per buildWedges call; its steps share the per-edge and per-pairing arrays below.
+class WedgeSetBuilder {
+ public:
+  WedgeSetBuilder(const Mesh& mesh, const Silhouette& silhouette, const Light& light,
+                  const WedgeBuildOptions& options)
+      : mesh_(mesh), light_(light), c_(light.center), r_(double(light.radius)),
+        edges_(wedge_detail::makeUnitEdges(
+            mesh, silhouette, c_,
+            std::sin(options.parallel_degrees * std::numbers::pi / 180.0))),
+        pairs_(wedge_detail::pairAtVertices(edges_, c_)), n_(edges_.size()),
+        n_pairings_(pairs_.pairings.size()), planes_(n_), dir_in_(n_pairings_),
+        dir_out_(n_pairings_), split_(n_pairings_, 0), lone_a_(n_), lone_b_(n_), left_(n_),
+        right_(n_), wedge_of_(n_, kNoWedgeLink) {
+    out_.junction_vertices = pairs_.junction_vertices;
+    for (size_t e = 0; e < n_; ++e)
+      if (!edges_[e].parallel) planes_[e] = wedge_detail::edgePlanes(edges_[e], c_, r_);
+    // Umbra directions at each pairing's vertex: dir_in for the incoming quad's b end, dir_out
+    // for the outgoing quad's a end. They are one value (so bit-identical) except at a split
+    // pairing, where a connector quad joins them. Hard by default: what parallel edges inside
+    // a run keep. One more per unpaired end.
+    for (size_t p = 0; p < n_pairings_; ++p)
+      dir_in_[p] = dir_out_[p] = hard(pairs_.pairings[p].vertex);
+    for (size_t e = 0; e < n_; ++e) {
+      lone_a_[e] = hard(edges_[e].va);
+      lone_b_[e] = hard(edges_[e].vb);
+    }
+  }
+
+  WedgeSet build() {
+    for (uint32_t e = 0; e < n_; ++e) {
+      if (edges_[e].parallel) continue;
+      closeEndB(e);
+      closeEndA(e);
+    }
+    assembleWedges();
+    buildUmbraQuads();
+    return std::move(out_);
+  }
+
+ private:
+  // The hard shadow volume's direction at a vertex, in float exactly as the caster volumes stage
+  // computes it, and its double unit vector for the r == 0 rays.
+  vec3 hard(uint32_t v) const { return mesh_.positions[v] - light_.center; }
+  dvec3 hardUnit(uint32_t v) const {
+    const dvec3 d(hard(v));
+    const double len = glm::length(d);
+    return len > 0.0 ? d / len : dvec3(0.0, -1.0, 0.0);
+  }
+  // The umbra quads take the wedges' front rays, except with r == 0, where the hard direction
+  // makes the umbra the hard volume bit for bit.
+  vec3 umbraDirection(const dvec3& ray_front, uint32_t v) const {
+    return r_ > 0.0 ? vec3(ray_front) : hard(v);
+  }
+  void setPairingDirection(uint32_t p, const vec3& d) { dir_in_[p] = dir_out_[p] = d; }
+
+  // An end with no partner closed by its own plane (wedge_sides.h, loneSide).
+  void closeAlone(uint32_t e, bool at_b, uint32_t pairing) {
+    const uint32_t v = at_b ? edges_[e].vb : edges_[e].va;
+    const SidePlane s = wedge_detail::loneSide(edges_[e], at_b, c_, r_, hardUnit(v));
+    (at_b ? right_ : left_)[e] = WedgeEnd{s.plane, s.front_in, s.back_in, s.dir, kNoWedgeLink};
+    const vec3 u = umbraDirection(s.front_in, v);
+    if (pairing != kNoWedgeLink) {
+      setPairingDirection(pairing, u);
+    } else {
+      (at_b ? lone_b_ : lone_a_)[e] = u;
+    }
+    ++out_.unpaired_ends;
+  }
+
+  // Shares the side plane between e0 (ending there) and e2 (starting there) if it gives both a
+  // usable end; otherwise each wedge gets its own end plane, as if alone (the caller then joins
+  // their umbra quads; section 4.1, Figure 7). Returns whether the plane was shared.
+  bool join(uint32_t e0, uint32_t e2, const SidePlane& s) {
+    const Plane flipped = negated(s.plane);
+    if (wedge_detail::sideFits(edges_[e0], planes_[e0], s.plane, s.front_in, s.back_in, true, c_,
+                               r_) &&
+        wedge_detail::sideFits(edges_[e2], planes_[e2], flipped, s.front_out, s.back_out, false,
+                               c_, r_)) {
+      right_[e0] = WedgeEnd{s.plane, s.front_in, s.back_in, s.dir, e2};
+      left_[e2] = WedgeEnd{flipped, s.front_out, s.back_out, s.dir, e0};
+      return true;
+    }
+    for (const bool at_b : {true, false}) {
+      const uint32_t e = at_b ? e0 : e2;
+      const uint32_t v = at_b ? edges_[e].vb : edges_[e].va;
+      const SidePlane alone = wedge_detail::loneSide(edges_[e], at_b, c_, r_, hardUnit(v));
+      (at_b ? right_ : left_)[e] =
+          WedgeEnd{alone.plane, alone.front_in, alone.back_in, alone.dir, kNoWedgeLink};
+    }
+    ++out_.split_vertices;
+    return false;
+  }
+
+  // Walks a run of parallel edges from pairing p in the given direction; returns the first
+  // non-parallel unit edge reached (kNoWedgeLink if the chain breaks first) and the last
+  // pairing crossed.
+  uint32_t walk(uint32_t p, bool forward, uint32_t& last) const {
+    last = p;
+    uint32_t q = forward ? pairs_.pairings[p].out : pairs_.pairings[p].in;
+    for (size_t steps = 0; edges_[q].parallel && steps < n_; ++steps) {
+      const uint32_t next = forward ? pairs_.at_b[q] : pairs_.at_a[q];
+      if (next == kNoWedgeLink) return kNoWedgeLink;
+      last = next;
+      q = forward ? pairs_.pairings[next].out : pairs_.pairings[next].in;
+    }
+    return edges_[q].parallel ? kNoWedgeLink : q;
+  }
+
+  // The b end of non-parallel edge e: this edge is the pairing's incoming edge, so it builds
+  // the shared side plane (section 4.1), across a run of nearly parallel edges (section 8)
+  // where one follows.
+  void closeEndB(uint32_t e) {
+    const uint32_t pb = pairs_.at_b[e];
+    if (pb == kNoWedgeLink) {
+      closeAlone(e, true, kNoWedgeLink);
+    } else if (const uint32_t next = pairs_.pairings[pb].out; !edges_[next].parallel) {
+      const uint32_t v = pairs_.pairings[pb].vertex;
+      const SidePlane s = wedge_detail::regularSide(edges_[e], planes_[e], edges_[next],
+                                                    planes_[next], c_, r_, hardUnit(v));
+      if (join(e, next, s)) {
+        setPairingDirection(pb, umbraDirection(s.front_in, v));
+      } else {
+        // Split: each quad follows its own wedge's front ray; a connector fans between them.
+        dir_in_[pb] = umbraDirection(right_[e].ray_front, v);
+        dir_out_[pb] = umbraDirection(left_[next].ray_front, v);
+        split_[pb] = 1;
+      }
+    } else {
+      uint32_t last = pb;
+      const uint32_t e2 = walk(pb, true, last);
+      if (e2 != kNoWedgeLink && e2 != e) {
+        const SidePlane s =
+            wedge_detail::bridgedSide(edges_[e], planes_[e], edges_[e2], planes_[e2], c_, r_,
+                                      hardUnit(edges_[e].vb), hardUnit(edges_[e2].va));
+        // Shared or not, the run's quads take e0's and e2's front rays at v and w (they need
+        // no connector: the parallel quads span the difference).
+        join(e, e2, s);
+        setPairingDirection(pb, umbraDirection(right_[e].ray_front, edges_[e].vb));
+        setPairingDirection(last, umbraDirection(left_[e2].ray_front, edges_[e2].va));
+      } else {
+        closeAlone(e, true, pb);
+      }
+    }
+  }
+
+  // The a end of non-parallel edge e: built by the incoming edge's b end (closeEndB), unless
+  // there is none.
+  void closeEndA(uint32_t e) {
+    const uint32_t pa = pairs_.at_a[e];
+    if (pa == kNoWedgeLink) {
+      closeAlone(e, false, kNoWedgeLink);
+    } else if (edges_[pairs_.pairings[pa].in].parallel) {
+      uint32_t last = pa;
+      const uint32_t e0 = walk(pa, false, last);
+      if (e0 == kNoWedgeLink || e0 == e) closeAlone(e, false, pa);
+    }
+  }
+
+  // One wedge per non-parallel unit edge, from its front and back planes and its two ends,
+  // cut where its side planes cross (Figure 6); then the links to the neighbours sharing an
+  // end plane.
+  void assembleWedges() {
+    out_.wedges.reserve(n_);
+    for (uint32_t e = 0; e < n_; ++e) {
+      const UnitEdge& u = edges_[e];
+      if (u.parallel) {
+        ++out_.parallel_edges_removed;
+        continue;
+      }
+      Wedge w;
+      w.va = u.va;
+      w.vb = u.vb;
+      w.a = u.a;
+      w.b = u.b;
+      w.front = planes_[e].front;
+      w.back = planes_[e].back;
+      w.left = left_[e].plane;
+      w.right = right_[e].plane;
+      w.dir_left = left_[e].dir;
+      w.dir_right = right_[e].dir;
+      w.edge_dir = u.t;
+      w.normal = u.n;
+      w.ray_front_left = left_[e].ray_front;
+      w.ray_back_left = left_[e].ray_back;
+      w.ray_front_right = right_[e].ray_front;
+      w.ray_back_right = right_[e].ray_back;
+      w.unit_edge = e;
+      w.flat = !(r_ > 0.0);
+      if (!w.flat) {
+        if (!wedge_detail::cutWhereSidesCross(w, c_)) {
+          w.flat = true;
+          ++out_.degenerate_wedges;
+        } else if (w.finite) {
+          ++out_.finite_wedges;
+        }
+      }
+      wedge_of_[e] = uint32_t(out_.wedges.size());
+      out_.wedges.push_back(w);
+    }
+    for (Wedge& w : out_.wedges) {
+      const uint32_t e = w.unit_edge;
+      if (left_[e].neighbour != kNoWedgeLink) w.left_wedge = wedge_of_[left_[e].neighbour];
+      if (right_[e].neighbour != kNoWedgeLink) w.right_wedge = wedge_of_[right_[e].neighbour];
+    }
+  }
+
+  // Quads of the unit edges (index = unit edge), then one connector per split pairing, with
+  // the gap wedge over its notch (Figure 7).
+  void buildUmbraQuads() {
+    std::vector<uint32_t> connector_of(n_pairings_, kNoWedgeLink);
+    uint32_t n_quads = uint32_t(n_);
+    for (size_t p = 0; p < n_pairings_; ++p)
+      if (split_[p]) connector_of[p] = n_quads++;
+    out_.umbra.resize(n_quads);
+    for (uint32_t e = 0; e < n_; ++e) {
+      UmbraQuad& q = out_.umbra[e];
+      q.va = edges_[e].va;
+      q.vb = edges_[e].vb;
+      const uint32_t pa = pairs_.at_a[e], pb = pairs_.at_b[e];
+      q.inf_a = pa != kNoWedgeLink ? dir_out_[pa] : lone_a_[e];
+      q.inf_b = pb != kNoWedgeLink ? dir_in_[pb] : lone_b_[e];
+      if (pa != kNoWedgeLink)
+        q.prev = connector_of[pa] != kNoWedgeLink ? connector_of[pa] : pairs_.pairings[pa].in;
+      if (pb != kNoWedgeLink)
+        q.next = connector_of[pb] != kNoWedgeLink ? connector_of[pb] : pairs_.pairings[pb].out;
+      q.has_wedge = !edges_[e].parallel;
+    }
+    for (size_t p = 0; p < n_pairings_; ++p) {
+      if (connector_of[p] == kNoWedgeLink) continue;
+      // The fan at infinity from the incoming quad's direction to the outgoing one's: a quad
+      // (b, a, a', b') with a == b, so it closes the volume in the same orientation.
+      UmbraQuad& q = out_.umbra[connector_of[p]];
+      q.va = q.vb = pairs_.pairings[p].vertex;
+      q.inf_a = dir_in_[p];
+      q.inf_b = dir_out_[p];
+      q.prev = pairs_.pairings[p].in;
+      q.next = pairs_.pairings[p].out;
+      q.has_wedge = false;
+      // The notch between the two wedges' end planes (if they do not overlap there).
+      const uint32_t in = pairs_.pairings[p].in, next = pairs_.pairings[p].out;
+      Wedge gap;
+      if (r_ > 0.0 && wedge_detail::gapWedge(out_.wedges[wedge_of_[in]], wedge_of_[in],
+                                              out_.wedges[wedge_of_[next]], wedge_of_[next],
+                                              connector_of[p], c_, gap))
+        out_.gap_wedges.push_back(gap);
+    }
+  }
+
+  const Mesh& mesh_;
+  const Light& light_;
+  const dvec3 c_;
+  const double r_;
+  const std::vector<UnitEdge> edges_;
+  const wedge_detail::Pairings pairs_;
+  const size_t n_, n_pairings_;
+  std::vector<EdgePlanes> planes_;
+  std::vector<vec3> dir_in_, dir_out_;
+  std::vector<uint8_t> split_;
+  std::vector<vec3> lone_a_, lone_b_;
+  std::vector<WedgeEnd> left_, right_;
+  std::vector<uint32_t> wedge_of_;
+  WedgeSet out_;
+};
+
 }  // namespace
 
 WedgeSet buildWedges(const Mesh& mesh, const Silhouette& silhouette, const Light& light,
@@ -90,228 +357,7 @@ WedgeSet buildWedges(const Mesh& mesh, const Silhouette& silhouette, const Light
   PENUMBRA_CHECK(options.parallel_degrees >= 0.0 && options.parallel_degrees < 90.0,
                  "penumbra wedges: parallel_degrees must be in [0, 90), not {}",
                  options.parallel_degrees);
-  const dvec3 c(light.center);
-  const double r = double(light.radius);
-  const double parallel_sin = std::sin(options.parallel_degrees * std::numbers::pi / 180.0);
-
-  const std::vector<UnitEdge> edges =
-      wedge_detail::makeUnitEdges(mesh, silhouette, c, parallel_sin);
-  const wedge_detail::Pairings pairs = wedge_detail::pairAtVertices(edges, c);
-  const size_t n = edges.size();
-  WedgeSet out;
-  out.junction_vertices = pairs.junction_vertices;
-
-  // The hard shadow volume's direction at a vertex, in float exactly as the caster volumes stage
-  // computes it, and its double unit vector for the r == 0 rays.
-  const auto hard = [&](uint32_t v) { return mesh.positions[v] - light.center; };
-  const auto hardUnit = [&](uint32_t v) {
-    const dvec3 d(hard(v));
-    const double len = glm::length(d);
-    return len > 0.0 ? d / len : dvec3(0.0, -1.0, 0.0);
-  };
-  // The umbra quads take the wedges' front rays, except with r == 0, where the hard direction
-  // makes the umbra the hard volume bit for bit.
-  const auto umbraDirection = [&](const dvec3& ray_front, uint32_t v) {
-    return r > 0.0 ? vec3(ray_front) : hard(v);
-  };
-
-  std::vector<EdgePlanes> planes(n);
-  for (size_t e = 0; e < n; ++e)
-    if (!edges[e].parallel) planes[e] = wedge_detail::edgePlanes(edges[e], c, r);
-
-  // Umbra directions at each pairing's vertex: dir_in for the incoming quad's b end, dir_out
-  // for the outgoing quad's a end. They are one value (so bit-identical) except at a split
-  // pairing, where a connector quad joins them. Hard by default: what parallel edges inside a
-  // run keep. One more per unpaired end.
-  const size_t n_pairings = pairs.pairings.size();
-  std::vector<vec3> dir_in(n_pairings), dir_out(n_pairings);
-  std::vector<uint8_t> split(n_pairings, 0);
-  for (size_t p = 0; p < n_pairings; ++p) dir_in[p] = dir_out[p] = hard(pairs.pairings[p].vertex);
-  const auto setPairingDirection = [&](uint32_t p, const vec3& d) { dir_in[p] = dir_out[p] = d; };
-  std::vector<vec3> lone_a(n), lone_b(n);
-  for (size_t e = 0; e < n; ++e) {
-    lone_a[e] = hard(edges[e].va);
-    lone_b[e] = hard(edges[e].vb);
-  }
-
-  std::vector<WedgeEnd> left(n), right(n);
-  const auto closeAlone = [&](uint32_t e, bool at_b, uint32_t pairing) {
-    const uint32_t v = at_b ? edges[e].vb : edges[e].va;
-    const SidePlane s = wedge_detail::loneSide(edges[e], at_b, c, r, hardUnit(v));
-    (at_b ? right : left)[e] = WedgeEnd{s.plane, s.front_in, s.back_in, s.dir, kNoWedgeLink};
-    const vec3 u = umbraDirection(s.front_in, v);
-    if (pairing != kNoWedgeLink) {
-      setPairingDirection(pairing, u);
-    } else {
-      (at_b ? lone_b : lone_a)[e] = u;
-    }
-    ++out.unpaired_ends;
-  };
-  // Shares the side plane between e0 (ending there) and e2 (starting there) if it gives both a
-  // usable end; otherwise each wedge gets its own end plane, as if alone (the caller then joins
-  // their umbra quads). Returns whether the plane was shared.
-  const auto join = [&](uint32_t e0, uint32_t e2, const SidePlane& s) {
-    const Plane flipped = negated(s.plane);
-    if (wedge_detail::sideFits(edges[e0], planes[e0], s.plane, s.front_in, s.back_in, true, c, r) &&
-        wedge_detail::sideFits(edges[e2], planes[e2], flipped, s.front_out, s.back_out, false, c,
-                               r)) {
-      right[e0] = WedgeEnd{s.plane, s.front_in, s.back_in, s.dir, e2};
-      left[e2] = WedgeEnd{flipped, s.front_out, s.back_out, s.dir, e0};
-      return true;
-    }
-    for (const bool at_b : {true, false}) {
-      const uint32_t e = at_b ? e0 : e2;
-      const uint32_t v = at_b ? edges[e].vb : edges[e].va;
-      const SidePlane alone = wedge_detail::loneSide(edges[e], at_b, c, r, hardUnit(v));
-      (at_b ? right : left)[e] =
-          WedgeEnd{alone.plane, alone.front_in, alone.back_in, alone.dir, kNoWedgeLink};
-    }
-    ++out.split_vertices;
-    return false;
-  };
-  // Walks a run of parallel edges from pairing p in the given direction; returns the first
-  // non-parallel unit edge reached (kNoWedgeLink if the chain breaks first) and the last
-  // pairing crossed.
-  const auto walk = [&](uint32_t p, bool forward, uint32_t& last) {
-    last = p;
-    uint32_t q = forward ? pairs.pairings[p].out : pairs.pairings[p].in;
-    for (size_t steps = 0; edges[q].parallel && steps < n; ++steps) {
-      const uint32_t next = forward ? pairs.at_b[q] : pairs.at_a[q];
-      if (next == kNoWedgeLink) return kNoWedgeLink;
-      last = next;
-      q = forward ? pairs.pairings[next].out : pairs.pairings[next].in;
-    }
-    return edges[q].parallel ? kNoWedgeLink : q;
-  };
-
-  for (uint32_t e = 0; e < n; ++e) {
-    if (edges[e].parallel) continue;
-    // The b end: this edge is the pairing's incoming edge, so it builds the shared plane.
-    const uint32_t pb = pairs.at_b[e];
-    if (pb == kNoWedgeLink) {
-      closeAlone(e, true, kNoWedgeLink);
-    } else if (const uint32_t next = pairs.pairings[pb].out; !edges[next].parallel) {
-      const uint32_t v = pairs.pairings[pb].vertex;
-      const SidePlane s = wedge_detail::regularSide(edges[e], planes[e], edges[next], planes[next],
-                                                    c, r, hardUnit(v));
-      if (join(e, next, s)) {
-        setPairingDirection(pb, umbraDirection(s.front_in, v));
-      } else {
-        // Split: each quad follows its own wedge's front ray; a connector fans between them.
-        dir_in[pb] = umbraDirection(right[e].ray_front, v);
-        dir_out[pb] = umbraDirection(left[next].ray_front, v);
-        split[pb] = 1;
-      }
-    } else {
-      uint32_t last = pb;
-      const uint32_t e2 = walk(pb, true, last);
-      if (e2 != kNoWedgeLink && e2 != e) {
-        const SidePlane s =
-            wedge_detail::bridgedSide(edges[e], planes[e], edges[e2], planes[e2], c, r,
-                                      hardUnit(edges[e].vb), hardUnit(edges[e2].va));
-        // Shared or not, the run's quads take e0's and e2's front rays at v and w (they need no
-        // connector: the parallel quads span the difference).
-        join(e, e2, s);
-        setPairingDirection(pb, umbraDirection(right[e].ray_front, edges[e].vb));
-        setPairingDirection(last, umbraDirection(left[e2].ray_front, edges[e2].va));
-      } else {
-        closeAlone(e, true, pb);
-      }
-    }
-    // The a end: built by the incoming edge's b end above, unless there is none.
-    const uint32_t pa = pairs.at_a[e];
-    if (pa == kNoWedgeLink) {
-      closeAlone(e, false, kNoWedgeLink);
-    } else if (edges[pairs.pairings[pa].in].parallel) {
-      uint32_t last = pa;
-      const uint32_t e0 = walk(pa, false, last);
-      if (e0 == kNoWedgeLink || e0 == e) closeAlone(e, false, pa);
-    }
-  }
-
-  std::vector<uint32_t> wedge_of(n, kNoWedgeLink);
-  out.wedges.reserve(n);
-  for (uint32_t e = 0; e < n; ++e) {
-    const UnitEdge& u = edges[e];
-    if (u.parallel) {
-      ++out.parallel_edges_removed;
-      continue;
-    }
-    Wedge w;
-    w.va = u.va;
-    w.vb = u.vb;
-    w.a = u.a;
-    w.b = u.b;
-    w.front = planes[e].front;
-    w.back = planes[e].back;
-    w.left = left[e].plane;
-    w.right = right[e].plane;
-    w.dir_left = left[e].dir;
-    w.dir_right = right[e].dir;
-    w.edge_dir = u.t;
-    w.normal = u.n;
-    w.ray_front_left = left[e].ray_front;
-    w.ray_back_left = left[e].ray_back;
-    w.ray_front_right = right[e].ray_front;
-    w.ray_back_right = right[e].ray_back;
-    w.unit_edge = e;
-    w.flat = !(r > 0.0);
-    if (!w.flat) {
-      if (!wedge_detail::cutWhereSidesCross(w, c)) {
-        w.flat = true;
-        ++out.degenerate_wedges;
-      } else if (w.finite) {
-        ++out.finite_wedges;
-      }
-    }
-    wedge_of[e] = uint32_t(out.wedges.size());
-    out.wedges.push_back(w);
-  }
-  for (Wedge& w : out.wedges) {
-    const uint32_t e = w.unit_edge;
-    if (left[e].neighbour != kNoWedgeLink) w.left_wedge = wedge_of[left[e].neighbour];
-    if (right[e].neighbour != kNoWedgeLink) w.right_wedge = wedge_of[right[e].neighbour];
-  }
-
-  // Quads of the unit edges (index = unit edge), then one connector per split pairing.
-  std::vector<uint32_t> connector_of(n_pairings, kNoWedgeLink);
-  uint32_t n_quads = uint32_t(n);
-  for (size_t p = 0; p < n_pairings; ++p)
-    if (split[p]) connector_of[p] = n_quads++;
-  out.umbra.resize(n_quads);
-  for (uint32_t e = 0; e < n; ++e) {
-    UmbraQuad& q = out.umbra[e];
-    q.va = edges[e].va;
-    q.vb = edges[e].vb;
-    const uint32_t pa = pairs.at_a[e], pb = pairs.at_b[e];
-    q.inf_a = pa != kNoWedgeLink ? dir_out[pa] : lone_a[e];
-    q.inf_b = pb != kNoWedgeLink ? dir_in[pb] : lone_b[e];
-    if (pa != kNoWedgeLink)
-      q.prev = connector_of[pa] != kNoWedgeLink ? connector_of[pa] : pairs.pairings[pa].in;
-    if (pb != kNoWedgeLink)
-      q.next = connector_of[pb] != kNoWedgeLink ? connector_of[pb] : pairs.pairings[pb].out;
-    q.has_wedge = !edges[e].parallel;
-  }
-  for (size_t p = 0; p < n_pairings; ++p) {
-    if (connector_of[p] == kNoWedgeLink) continue;
-    // The fan at infinity from the incoming quad's direction to the outgoing one's: a quad
-    // (b, a, a', b') with a == b, so it closes the volume in the same orientation.
-    UmbraQuad& q = out.umbra[connector_of[p]];
-    q.va = q.vb = pairs.pairings[p].vertex;
-    q.inf_a = dir_in[p];
-    q.inf_b = dir_out[p];
-    q.prev = pairs.pairings[p].in;
-    q.next = pairs.pairings[p].out;
-    q.has_wedge = false;
-    // The notch between the two wedges' end planes (if they do not overlap there).
-    const uint32_t in = pairs.pairings[p].in, next = pairs.pairings[p].out;
-    Wedge gap;
-    if (r > 0.0 && wedge_detail::gapWedge(out.wedges[wedge_of[in]], wedge_of[in],
-                                          out.wedges[wedge_of[next]], wedge_of[next],
-                                          connector_of[p], c, gap))
-      out.gap_wedges.push_back(gap);
-  }
-  return out;
+  return WedgeSetBuilder(mesh, silhouette, light, options).build();
 }
 
 WedgeIntensityConstants wedgeIntensityConstants(const Wedge& w) {

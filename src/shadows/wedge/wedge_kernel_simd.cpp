@@ -29,11 +29,83 @@ HWY_INLINE hn::Vec<DF> planeAt(DF df, const ScreenPlane& p, hn::Vec<DF> sx, hn::
   return hn::Add(hn::Add(ab, hn::Mul(hn::Set(df, p.c), z)), hn::Set(df, p.d));
 }
 
+// The light intensity s in [0, 1] from the four plane values (2002 paper, section 4.2:
+// screenIntensity, wedge_screen.h), operation for operation, smoothed where the wedge asks.
+template <class DF>
+HWY_INLINE hn::Vec<DF> screenIntensityLanes(DF df, const ScreenWedge& w, hn::Vec<DF> f,
+                                            hn::Vec<DF> b, hn::Vec<DF> l, hn::Vec<DF> r) {
+  const auto zero = hn::Zero(df);
+  const auto one = hn::Set(df, 1.0f);
+  const ScreenIntensity& k = w.k;
+  const auto dl =
+      hn::Add(hn::Mul(f, hn::Set(df, k.back_left)), hn::Mul(b, hn::Set(df, k.front_left)));
+  const auto dr =
+      hn::Add(hn::Mul(f, hn::Set(df, k.back_right)), hn::Mul(b, hn::Set(df, k.front_right)));
+  const auto rl = hn::Mul(r, hn::Set(df, k.left));
+  const auto lr = hn::Mul(l, hn::Set(df, k.right));
+  const auto numerator = hn::Mul(
+      b, hn::Add(hn::Mul(hn::Mul(rl, hn::Set(df, k.front_left)), dr),
+                 hn::Mul(hn::Mul(lr, hn::Set(df, k.front_right)), dl)));
+  const auto denominator = hn::Mul(hn::Mul(hn::Add(rl, lr), dl), dr);
+  const auto positive = hn::Gt(denominator, zero);
+  // Divide only where the denominator is positive (no 0/0 lanes), else 0.5.
+  const auto safe_denominator = hn::IfThenElse(positive, denominator, one);
+  auto s = hn::IfThenElse(positive, hn::Div(numerator, safe_denominator), hn::Set(df, 0.5f));
+  s = hn::IfThenElse(hn::Lt(s, zero), zero, s);
+  s = hn::IfThenElse(hn::Gt(s, one), one, s);
+  if (w.smooth) {  // smoothFalloff: (3 s) s - ((2 s) s) s
+    s = hn::Sub(hn::Mul(hn::Mul(hn::Set(df, 3.0f), s), s),
+                hn::Mul(hn::Mul(hn::Mul(hn::Set(df, 2.0f), s), s), s));
+  }
+  return s;
+}
+
+// The penumbra part (2002 paper, section 4.2): where the depth-buffer point (sx, sy, stored)
+// lies inside all four wedge planes, round(li_scale s) is added to `value` and the lane to
+// `write`; the pixels inside are counted.
+template <class DF, class DI>
+HWY_INLINE void addPenumbra(DF df, DI di, const ScreenWedge& w, float li_scale, hn::Vec<DF> sx,
+                            hn::Vec<DF> sy, hn::Vec<DF> stored, hn::Mask<DF> surface,
+                            hn::Vec<DI>& value, hn::Mask<DF>& write, uint64_t& inside) {
+  const auto zero = hn::Zero(df);
+  const auto f = planeAt(df, w.front, sx, sy, stored);
+  const auto b = planeAt(df, w.back, sx, sy, stored);
+  const auto l = planeAt(df, w.left, sx, sy, stored);
+  const auto r = planeAt(df, w.right, sx, sy, stored);
+  auto in = hn::And(surface, hn::Ge(f, zero));
+  in = hn::And(in, hn::Ge(b, zero));
+  in = hn::And(in, hn::Ge(l, zero));
+  in = hn::And(in, hn::Ge(r, zero));
+  if (hn::AllFalse(df, in)) return;
+  inside += hn::CountTrue(df, in);
+  const auto s = screenIntensityLanes(df, w, f, b, l, r);
+  // round(li_scale s): to nearest, ties to even.
+  const auto penumbra = hn::NearestInt(hn::Mul(s, hn::Set(df, li_scale)));
+  value = hn::Add(value, hn::IfThenElseZero(hn::RebindMask(di, in), penumbra));
+  write = hn::Or(write, in);
+}
+
+// Adds each lane's value in `write` to the 16-bit LI buffer (liAdd, wrapping), pixel by pixel
+// (the few that receive a contribution); `n` lanes lie in the span.
+template <class DI, class M>
+HWY_INLINE void addToLiRow(DI di, hn::Vec<DI> value, M write, int n, int16_t* li,
+                           uint64_t& writes) {
+  constexpr size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);  // 16 with AVX-512
+  HWY_ALIGN int32_t values[kMaxLanes];
+  HWY_ALIGN int32_t written[kMaxLanes];
+  hn::Store(value, di, values);
+  hn::Store(hn::VecFromMask(di, hn::RebindMask(di, write)), di, written);
+  for (int i = 0; i < n; ++i) {
+    if (written[i] == 0) continue;
+    li[i] = liAdd(li[i], values[i]);
+    ++writes;
+  }
+}
+
 void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
                      const WedgeKernelTarget& target, WedgeKernelCounts& counts) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
-  constexpr size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);  // 16 with AVX-512
   const int lanes = int(hn::Lanes(df));
   const auto iota_i = hn::Iota(di, 0);
   const hn::Vec<decltype(di)> lane_step[3] = {hn::Mul(hn::Set(di, e.dx[0]), iota_i),
@@ -44,12 +116,9 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
                                                 hn::Set(di, e.dx[2] * lanes)};
   const auto minus_one = hn::Set(di, -1);
   const auto zero = hn::Zero(df);
-  const auto one = hn::Set(df, 1.0f);
   const auto half = hn::Set(df, 0.5f);
   const auto da = hn::Set(df, e.da);
   const ScreenWedge* w = work.wedge;
-  HWY_ALIGN int32_t values[kMaxLanes];
-  HWY_ALIGN int32_t writes[kMaxLanes];
   const RowSpans spans(e);
   int y_lo, y_hi;
   if (!spans.rows(y_lo, y_hi)) return;
@@ -99,52 +168,13 @@ void WedgeKernelSimd(const TileEdges& e, const WedgeKernelWork& work,
       // Penumbra part: is the depth-buffer point inside all four wedge planes?
       if (w != nullptr) {
         const auto sx = hn::Add(hn::Iota(df, float(x)), half);
-        const auto f = planeAt(df, w->front, sx, sy, stored);
-        const auto b = planeAt(df, w->back, sx, sy, stored);
-        const auto l = planeAt(df, w->left, sx, sy, stored);
-        const auto r = planeAt(df, w->right, sx, sy, stored);
-        auto in = hn::And(surface, hn::Ge(f, zero));
-        in = hn::And(in, hn::Ge(b, zero));
-        in = hn::And(in, hn::Ge(l, zero));
-        in = hn::And(in, hn::Ge(r, zero));
-        if (!hn::AllFalse(df, in)) {
-          local.inside += hn::CountTrue(df, in);
-          // screenIntensity (wedge_screen.h), operation for operation.
-          const ScreenIntensity& k = w->k;
-          const auto dl = hn::Add(hn::Mul(f, hn::Set(df, k.back_left)), hn::Mul(b, hn::Set(df, k.front_left)));
-          const auto dr = hn::Add(hn::Mul(f, hn::Set(df, k.back_right)), hn::Mul(b, hn::Set(df, k.front_right)));
-          const auto rl = hn::Mul(r, hn::Set(df, k.left));
-          const auto lr = hn::Mul(l, hn::Set(df, k.right));
-          const auto numerator = hn::Mul(
-              b, hn::Add(hn::Mul(hn::Mul(rl, hn::Set(df, k.front_left)), dr),
-                         hn::Mul(hn::Mul(lr, hn::Set(df, k.front_right)), dl)));
-          const auto denominator = hn::Mul(hn::Mul(hn::Add(rl, lr), dl), dr);
-          const auto positive = hn::Gt(denominator, zero);
-          // Divide only where the denominator is positive (no 0/0 lanes), else 0.5.
-          const auto safe_denominator = hn::IfThenElse(positive, denominator, one);
-          auto s = hn::IfThenElse(positive, hn::Div(numerator, safe_denominator), half);
-          s = hn::IfThenElse(hn::Lt(s, zero), zero, s);
-          s = hn::IfThenElse(hn::Gt(s, one), one, s);
-          if (w->smooth) {  // smoothFalloff: (3 s) s - ((2 s) s) s
-            s = hn::Sub(hn::Mul(hn::Mul(hn::Set(df, 3.0f), s), s),
-                        hn::Mul(hn::Mul(hn::Mul(hn::Set(df, 2.0f), s), s), s));
-          }
-          // round(li_scale s): to nearest, ties to even.
-          const auto penumbra = hn::NearestInt(hn::Mul(s, hn::Set(df, work.li_scale)));
-          value = hn::Add(value, hn::IfThenElseZero(hn::RebindMask(di, in), penumbra));
-          write = hn::Or(write, in);
-        }
+        addPenumbra(df, di, *w, work.li_scale, sx, sy, stored, surface, value, write,
+                    local.inside);
       }
       // Add to the 16-bit LI buffer (liAdd, wrapping), pixel by pixel.
       if (hn::AllFalse(df, write)) continue;
-      hn::Store(value, di, values);
-      hn::Store(hn::VecFromMask(di, hn::RebindMask(di, write)), di, writes);
-      const int n = std::min(lanes, x_hi - x + 1);
-      for (int i = 0; i < n; ++i) {
-        if (writes[i] == 0) continue;
-        li_row[x - target.x0 + i] = liAdd(li_row[x - target.x0 + i], values[i]);
-        ++local.writes;
-      }
+      addToLiRow(di, value, write, std::min(lanes, x_hi - x + 1), li_row + (x - target.x0),
+                 local.writes);
     }
   }
   counts.covered += local.covered;
