@@ -61,7 +61,7 @@ TEST_F(Cli, TechniqueOptionsBelongToTheirTechnique) {
 TEST_F(Cli, BadArgumentsAreErrors) {
   expectError(run(""), "subcommand");
   expectError(run("render spheres --rays 0 --quiet"), "rays");
-  expectError(run("render spheres --volume-mode sideways --quiet"), "sideways");
+  expectError(run("render spheres --technique volume --volume-mode sideways --quiet"), "sideways");
   expectError(run("render spheres -o picture.jpg --quiet"), "picture.jpg");
   expectError(run("frobnicate"), "frobnicate");
   EXPECT_EQ(run("--help").exit_code, 0);
