@@ -348,6 +348,14 @@ float ExactSoftShadows::finishPixel(const PixelBasis& f, const std::vector<Pixel
   std::fill(count, count + samples_.padded, centre_count);
   if (!edges.empty() || !cutting.empty()) addEdgeSums(f, edges, planar, simd, count, scratch);
   if (!cutting.empty()) addCuttingTriangles(f, cutting, planar, count, scratch);
+  if (planar.texels.empty()) {
+    // One visibility for every channel: the lit samples counted in the same loop.
+    int lit = 0;
+    for (int i = 0; i < n; ++i) lit += count[i] == 0 && !(any_into && scratch.into[size_t(i)]);
+    const float v = float(lit) / float(n);
+    rgb = vec3(v);
+    return v;
+  }
   for (int i = 0; i < n; ++i)
     scratch.lit[size_t(i)] = count[i] == 0 && !(any_into && scratch.into[size_t(i)]);
   return tally(planar, scratch, rgb);
