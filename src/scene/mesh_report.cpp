@@ -1,32 +1,19 @@
 #include "scene/mesh_report.h"
 
-#include <numeric>
 #include <vector>
 
 #include <fmt/format.h>
+
+#include "scene/connected_parts.h"
 
 namespace penumbra {
 
 namespace {
 
-// Union-find over vertices: the connected components of the triangles.
+// The connected components of the triangles.
 size_t countComponents(const Mesh& mesh) {
-  std::vector<uint32_t> parent(mesh.positions.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-    const uint32_t a = find(mesh.indices[i]);
-    parent[find(mesh.indices[i + 1])] = a;
-    parent[find(mesh.indices[i + 2])] = a;
-  }
-  std::vector<bool> used(mesh.positions.size(), false);
-  for (uint32_t v : mesh.indices) used[v] = true;
-  size_t components = 0;
-  for (uint32_t v = 0; v < parent.size(); ++v) components += used[v] && find(v) == v;
-  return components;
+  std::vector<uint32_t> part_of_vertex;
+  return connectedParts(mesh, part_of_vertex);
 }
 
 }  // namespace

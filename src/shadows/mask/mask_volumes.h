@@ -26,10 +26,6 @@ struct MaskVolumes {
   std::vector<uint32_t> caster_of;   // per volume, its caster (scene mesh index)
 };
 
-// Per vertex of `mesh`, the connected part (0, 1, ...) of the triangles using it, in order of
-// first use by a triangle; unused vertices get part 0. Returns the number of parts.
-uint32_t connectedParts(const Mesh& mesh, std::vector<uint32_t>& part_of_vertex);
-
 // Counts silhouette_edges and triangles; adds the pass "silhouette".
 MaskVolumes maskVolumes(const Scene& scene, const vec3& centre, const View& view,
                         const EyeBuffers& eye, VolumeMode mode, Stats& stats);
