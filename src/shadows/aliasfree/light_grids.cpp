@@ -31,7 +31,7 @@ constexpr double kMinAxisFraction = 1e-9;
 struct CubeFace {
   dvec3 axis, u, v;
 };
-// +X, -X, +Y, -Y, +Z, -Z, each with a right-handed (u, v, axis) frame.
+// +X, -X, +Y, -Y, +Z, -Z, each with a right-handed (u, v, axis) basis.
 const std::array<CubeFace, 6> kCubeFaces = {{
     {dvec3(1, 0, 0), dvec3(0, 0, -1), dvec3(0, 1, 0)},
     {dvec3(-1, 0, 0), dvec3(0, 0, 1), dvec3(0, 1, 0)},

@@ -123,7 +123,7 @@ struct PairBatch {
 struct CoverageScratch {
   PixelBlock block;
   CoverageBasis bases[kBlockPixels];
-  bool framed[kBlockPixels];
+  bool with_basis[kBlockPixels];
   int px[kBlockPixels], py[kBlockPixels];
   float sum[kBlockPixels];
   float own_plane[kBlockPixels];
@@ -205,12 +205,12 @@ class CoverageTileRender {
       // (independent iterations: the square roots and divisions of one pixel's basis overlap
       // the next one's), then the pairs.
       const uint64_t reached = findCandidates(bin, s, work);
-      const uint64_t framed = frameBases((reached | cut) & s.block.active, s, work);
-      cutByOwnPlane(framed & cut, s);
-      const size_t n = gatherPairs(bin, framed, s, work);
+      const uint64_t with_basis = setUpBases((reached | cut) & s.block.active, s, work);
+      cutByOwnPlane(with_basis & cut, s);
+      const size_t n = gatherPairs(bin, with_basis, s, work);
       edgeCoverage(s.batch, n);
       sumEdgeTerms(s, n, work);
-      writeVisibility(framed, s);
+      writeVisibility(with_basis, s);
     }
   }
 
@@ -262,7 +262,7 @@ class CoverageTileRender {
       const uint32_t id = eye_.primitive.at(x, y);
       if (!(block.z[i] > 0.0f) || id == kNoPrimitive || away_(id)) continue;
       block.active |= uint64_t(1) << i;
-      s.framed[i] = false;
+      s.with_basis[i] = false;
       s.sum[i] = 0.0f;
       s.own_plane[i] = 1.0f;
       if (textured_) {
@@ -293,21 +293,21 @@ class CoverageTileRender {
     return reached;
   }
 
-  // The light's local basis at each pixel in `todo` (coverage_basis.h); returns those framed.
-  uint64_t frameBases(uint64_t todo, CoverageScratch& s, CoverageTileWork& work) const {
-    uint64_t framed = todo;
+  // The light's local basis at each pixel in `todo` (coverage_basis.h); returns those with a basis.
+  uint64_t setUpBases(uint64_t todo, CoverageScratch& s, CoverageTileWork& work) const {
+    uint64_t with_basis = todo;
     for (; todo != 0; todo &= todo - 1) {
       const int i = __builtin_ctzll(todo);
-      s.framed[i] = true;
+      s.with_basis[i] = true;
       ++work.reads;
       const dvec3 p = unproject_(s.px[i], s.py[i], s.block.z[i]);
       if (!coverageBasis(f_.light, p, s.bases[i])) {
-        framed &= ~(uint64_t(1) << i);
+        with_basis &= ~(uint64_t(1) << i);
         continue;
       }
       s.flip[i] = glm::dot(s.bases[i].b, edge_v_) < 0.0;
     }
-    return framed;
+    return with_basis;
   }
 
   // The fraction of the light in front of each pixel's own plane, for the pixels `todo` whose
@@ -330,18 +330,18 @@ class CoverageTileRender {
 
   // The block's (pixel, edge) pairs, the edge's end points in the pixel's basis, into the
   // batch; returns their number.
-  size_t gatherPairs(const EdgeBinTile& bin, uint64_t framed, CoverageScratch& s,
+  size_t gatherPairs(const EdgeBinTile& bin, uint64_t with_basis, CoverageScratch& s,
                      CoverageTileWork& work) const {
     size_t pairs = 0;
     for (const uint64_t mask : s.candidates) {
-      pairs += size_t(__builtin_popcountll(mask & framed));
+      pairs += size_t(__builtin_popcountll(mask & with_basis));
     }
     s.batch.resize(pairs);
     size_t next = 0;
     for (size_t j = 0; j < s.candidates.size(); ++j) {
       const uint32_t edge = bin.begin[j];
       const PotentialEdge& e = edges_.regions.edges[edge];
-      for (uint64_t todo = s.candidates[j] & framed; todo != 0; todo &= todo - 1) {
+      for (uint64_t todo = s.candidates[j] & with_basis; todo != 0; todo &= todo - 1) {
         const int i = __builtin_ctzll(todo);
         s.batch.set(next++, s.bases[i].homogeneous(e.a), s.bases[i].homogeneous(e.b),
                     edges_.weight[edge], i);
@@ -411,10 +411,10 @@ class CoverageTileRender {
   }
 
   // V = hard + the terms, clamped to [0, 1] (section 2.1.3), or to the own plane's share.
-  void writeVisibility(uint64_t framed, const CoverageScratch& s) const {
-    for (uint64_t active = framed; active != 0; active &= active - 1) {
+  void writeVisibility(uint64_t with_basis, const CoverageScratch& s) const {
+    for (uint64_t active = with_basis; active != 0; active &= active - 1) {
       const int i = __builtin_ctzll(active);
-      if (!s.framed[i]) continue;
+      if (!s.with_basis[i]) continue;
       const float f = s.own_plane[i];
       if (textured_) {
         for (int c = 0; c < 3; ++c) {
