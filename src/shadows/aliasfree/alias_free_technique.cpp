@@ -387,7 +387,9 @@ void testAliasFreeTiles(const IrregularZBuffer& z, const AliasFreeOccluderLists&
       visibility[sample_pixel[z.slot_sample[first * kOccluderBlock + slot]]] = 0.0f;
     }
   });
-  for (const uint64_t n : tile_tests) stats.count(kSampleTests, n);
+  uint64_t sample_tests = 0;
+  for (const uint64_t n : tile_tests) sample_tests += n;
+  stats.count(kSampleTests, sample_tests);
 }
 
 TechniqueResult AliasFree::render(const Light& light, const View& view, const EyeBuffers& eye,

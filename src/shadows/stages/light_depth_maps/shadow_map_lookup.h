@@ -107,8 +107,11 @@ void lookupVisiblePoints(const Scene& scene, const Light& light, const View& vie
       for (size_t k = 0; k < batch.count(); ++k) out[batch.x[k]] = values[k];
     }
   });
-  for (const uint64_t n : done) stats.count(kShadowMapLookups, n);
-  for (const uint64_t n : saved) stats.count(kLookupsSaved, n);
+  uint64_t looked_up = 0, skipped = 0;
+  for (const uint64_t n : done) looked_up += n;
+  for (const uint64_t n : saved) skipped += n;
+  stats.count(kShadowMapLookups, looked_up);
+  stats.count(kLookupsSaved, skipped);
 }
 
 }  // namespace penumbra
