@@ -21,7 +21,7 @@ if [ -z "$cxx" ]; then
   exit 1
 fi
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug \
-  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DPENUMBRA_SANITIZE=ON -DPENUMBRA_BUILD_FUZZ=ON \
+  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" -DPENUMBRA_SANITIZE=ON -DPENUMBRA_BUILD_FUZZ=ON \
   -DPENUMBRA_BUILD_TESTS=OFF -DPENUMBRA_BUILD_BENCH=OFF -DPENUMBRA_BUILD_LLVMPIPE_PEER=OFF > /dev/null
 cmake --build "$build" -j2 --target "penumbra_fuzz_$target"
 mkdir -p "$build/corpus/$target" "$build/findings/$target"
