@@ -76,7 +76,10 @@ TEST(Pcss, ZeroRadiusIsThePlainShadowMap) {
   const Frame f = sphereOverGround(2.0f, 0.0f);
   TechniqueConfig plain("shadow-map");
   plain.options<ShadowMapOptions>().pcf_kernel = 1;
-  plain.options<ShadowMapOptions>().slope_bias = 0.5;  // reach 1 texel: PCSS's 0.5 x 1
+  // PCSS's default bias at the projected point (slope bias 1.5 x half a texel) is a 1 x 1
+  // kernel's at reach 1 with slope bias 0.75; PCSS has no normal offset by default.
+  plain.options<ShadowMapOptions>().slope_bias = 0.5 * PcssOptions{}.slope_bias;
+  plain.options<ShadowMapOptions>().normal_offset = PcssOptions{}.normal_offset;
   const Image<float> a =
       renderShadows(TechniqueConfig("pcss"), f.scene, f.scene.lights[0], f.view, f.eye).visibility;
   const Image<float> b = renderShadows(plain, f.scene, f.scene.lights[0], f.view, f.eye).visibility;

@@ -208,6 +208,7 @@ TEST(ShadowMap, DefaultBiasAvoidsAcneAtGrazingAngles) {
     TechniqueConfig no_bias = shadowMap(resolution, 3);
     no_bias.options<ShadowMapOptions>().constant_bias = 0.0;
     no_bias.options<ShadowMapOptions>().slope_bias = 0.0;
+    no_bias.options<ShadowMapOptions>().normal_offset = 0.0;
     EXPECT_GT(shadowedFraction(no_bias), 0.2) << resolution << " texels, no bias";
     EXPECT_EQ(shadowedFraction(shadowMap(resolution, 3)), 0.0) << resolution << " texels";
   }

@@ -106,10 +106,12 @@ TEST(ShadowMapKernels, PcssSimdEqualsScalarOnRandomBatches) {
     PcssShape shape;
     shape.light_radius = trial % 4 == 0 ? 0.0 : 0.05 * trial;
     shape.constant_bias = trial % 2 == 0 ? 1.0 : 0.0;
+    shape.plane_test = trial % 3 == 1;  // PcssOccluderTest::Plane on a third of the trials
     shape.blocker = &blocker;
     shape.filter = &filter;
     const std::vector<double> sx = randomPositions(rng, n), sy = randomPositions(rng, n);
     std::vector<double> w(n), texel(n), slope_bias(n), turn_cos(n), turn_sin(n);
+    std::vector<double> plane_a(n), plane_x(n), plane_y(n);
     std::uniform_real_distribution<double> distance(0.5, 12.0), unit(0.0, 1.0);
     for (size_t p = 0; p < n; ++p) {
       w[p] = distance(rng);
@@ -118,9 +120,14 @@ TEST(ShadowMapKernels, PcssSimdEqualsScalarOnRandomBatches) {
       const double turn = 6.283185307179586 * unit(rng);
       turn_cos[p] = std::cos(turn);
       turn_sin[p] = std::sin(turn);
+      // A receiver plane under the light centre, tilted by up to 45 degrees per texel step.
+      plane_a[p] = w[p] * (0.5 + unit(rng));
+      plane_x[p] = (unit(rng) - 0.5) * texel[p];
+      plane_y[p] = (unit(rng) - 0.5) * texel[p];
     }
-    const PcssPoints points{sx.data(),         sy.data(),       w.data(),       texel.data(),
-                            slope_bias.data(), turn_cos.data(), turn_sin.data()};
+    const PcssPoints points{sx.data(),         sy.data(),       w.data(),         texel.data(),
+                            slope_bias.data(), turn_cos.data(), turn_sin.data(),  plane_a.data(),
+                            plane_x.data(),    plane_y.data()};
     std::vector<float> simd(n), scalar(n);
     uint64_t simd_reads = 0, scalar_reads = 0;
     pcssVisibility(face, shape, points, simd.data(), n, simd_reads, true);

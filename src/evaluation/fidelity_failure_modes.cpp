@@ -52,7 +52,12 @@ const FailureMode kModes[] = {
      "and filters a map rendered from the light's centre. Where several blockers at different "
      "heights are in the search region, or where the blocker is curved, the estimate is off, "
      "and the shadow map's texels and bias show, here most on the spheres' own terminators and "
-     "along the penumbrae's outer rims; nothing in it computes the covered part of the light."},
+     "along the penumbrae's outer rims; nothing in it computes the covered part of the light. It "
+     "runs tuned as an engine would ship it, on scenes that shadow themselves: a constant and a "
+     "slope-scaled depth bias (Unreal's ShadowBias and ShadowSlopeBias; Unity's depth bias, with "
+     "a normal bias beside it; Urho3D's constant, slope-scaled and normal-offset bias), and the "
+     "share of the light above the receiver's own plane; shadow-maps.md, \"Bias as engines ship "
+     "it\", has the choices and the before and after."},
 };
 
 const FidelityRow* findRow(const FidelityResult& r, const std::string& scene,

@@ -51,9 +51,7 @@ FrameTimings timeFrames(const FrameRenderer& renderer, int frames, int warmup, F
 }
 
 std::string passTimeText(const std::string& name, double ms, int decimals) {
-  if (ms >= 0.0) return fmt::format("{} {:.{}f}", name, ms, decimals);
-  return fmt::format("{}: the passes before ran concurrently, {:.{}f} of their time counted twice",
-                     name, -ms, decimals);
+  return fmt::format("{} {:.{}f}", name, ms, decimals);
 }
 
 std::string frameTimingsLine(const FrameTimings& t) {

@@ -28,11 +28,9 @@ FrameTimings timeFrames(const FrameRenderer& renderer, int frames, int warmup, F
 // "10 warm frames (1 warm-up): min 5.1, median 5.3, max 6.0 ms; median per pass: eye 0.6, ..."
 std::string frameTimingsLine(const FrameTimings& timings);
 
-// One pass of a pass list, "name 1.23" with `decimals` decimals. A negative time is no pass: a
-// technique that runs passes at once (exact_technique.cpp: the stencil beside the edges and
-// their binning) adds an entry of minus what their times sum beyond the wall-clock time they
-// took, so that the times still add up to the light's. It reads
-// "name: the passes before ran concurrently, 1.70 of their time counted twice".
+// One pass of a pass list, "name 1.23" with `decimals` decimals. Passes that ran beside others
+// carry their mark in the name ("edges (concurrent) 1.20"; Stats: kConcurrentPass), so a reader
+// sees why they are not part of the total.
 std::string passTimeText(const std::string& name, double ms, int decimals);
 
 double medianOf(std::vector<double> values);  // 0 for none

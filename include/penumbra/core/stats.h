@@ -40,6 +40,15 @@ struct CounterSpec {
   const char* description;
 };
 
+// A pass that ran on other threads beside other passes (a parallel section) has a name ending
+// in kConcurrentPass, e.g. "edges (concurrent)": its time overlaps theirs, so it is listed but
+// not added to the frame's total. The section's wall time beyond the passes it ran beside is
+// the pass kConcurrentWait (0 when they took longer), so the other passes add up to the wall
+// time and no pass time is ever negative.
+inline constexpr std::string_view kConcurrentPass = " (concurrent)";
+inline constexpr const char* kConcurrentWait = "waiting for concurrent passes";
+inline bool isConcurrentPass(std::string_view name) { return name.ends_with(kConcurrentPass); }
+
 struct Stats {
 #define PENUMBRA_STATS_FIELD(name, description) uint64_t name = 0;
   PENUMBRA_STATS_COUNTERS(PENUMBRA_STATS_FIELD)
@@ -68,9 +77,11 @@ struct Stats {
   }
   // The same value of every counter; a declared counter one side lacks counts as 0 there.
   bool sameCounters(const Stats& o) const;
+  // The frame's wall time: every pass but the concurrent ones (isConcurrentPass).
   double totalMs() const {
     double t = 0;
-    for (const auto& [name, ms] : time_ms) t += ms;
+    for (const auto& [name, ms] : time_ms)
+      if (!isConcurrentPass(name)) t += ms;
     return t;
   }
 };

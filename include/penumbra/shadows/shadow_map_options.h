@@ -21,9 +21,16 @@ struct ShadowMapOptions {
   // Depth bias subtracted from the receiver before it is compared with an occluder, both in
   // units of the world size of one texel at the receiver's distance: constant_bias texels, plus
   // slope_bias x tan(angle between the surface normal and the direction to the light) x the
-  // kernel's reach ((N + 1) / 2 texels), the tangent capped at 10.
+  // kernel's reach ((N + 1) / 2 texels), the tangent capped at 10 (the slope-scaled bias, an
+  // option: 0 by default).
+  // Normal-offset sampling: the point is looked up normal_offset x the kernel's reach texels
+  // (at its distance) off its surface, along the visible triangle's normal. At 1 a planar
+  // receiver cannot shadow itself within the kernel at any angle
+  // (src/shadows/stages/light_depth_maps/shadow_map_lookup.h), so the default needs no slope
+  // bias, whose leaks at grazing angles it replaces (docs/shadow-maps.md, "Bias").
   double constant_bias = 1.0;
-  double slope_bias = 1.0;
+  double slope_bias = 0.0;
+  double normal_offset = 1.0;
   ShadowMapProjection projection = ShadowMapProjection::Auto;
   // 0: the spot frustum is fitted around the view's visible points, so it shadows exactly what
   // a cube would (the light still shines everywhere). > 0: the light is a spotlight: a square

@@ -408,9 +408,8 @@ float ExactSoftShadows::insideLightPixel(const PixelBasis& f, const PlanarSample
 
 // The two-sided stencil at the light centre (the reference count D(c)) and the potential
 // silhouette edges binned to tiles depend only on the eye buffers: they run at once (their
-// counters and timings kept apart, then added). Their passes overlap in time, so a pass
-// "overlap" (<= 0 ms) takes back what their sum exceeds the wall-clock time by, and the light's
-// total stays the time it took.
+// counters and timings kept apart, then added). The edge side's passes are marked concurrent
+// (Stats: kConcurrentPass), so the light's total stays the time it took.
 std::shared_ptr<const PotentialEdges> ExactSoftShadows::cachedPotentialEdges(
     const Light& light) const {
   {
@@ -467,10 +466,15 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
       });
   const double wall =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // The stencil's passes keep their times; the edge side's are marked concurrent (totalMs
+  // leaves them out), and the wall time the section took beyond the stencil is its own pass, so
+  // the frame's passes add up to its wall time with no negative entry.
+  double stencil_ms = 0.0;
+  for (size_t k = passes_before; k < stats.time_ms.size(); ++k)
+    stencil_ms += stats.time_ms[k].second;
+  for (auto& [name, ms] : edge_stats.time_ms) name += kConcurrentPass;
   stats.add(edge_stats);
-  double passes = 0.0;
-  for (size_t k = passes_before; k < stats.time_ms.size(); ++k) passes += stats.time_ms[k].second;
-  stats.time_ms.emplace_back("overlap", std::min(0.0, wall - passes));
+  stats.time_ms.emplace_back(kConcurrentWait, std::max(0.0, wall - stencil_ms));
 }
 
 // Whether the visible triangle's mesh was drawn z-pass (its quads replayed, QuadReplay).

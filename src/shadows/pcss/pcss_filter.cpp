@@ -25,6 +25,13 @@ std::vector<double> nearestOccluders(const LightDepthMaps& maps) {
   return nearest;
 }
 
+double aboveHorizon(double height, double radius) {
+  if (!(radius > 0.0)) return 1.0;
+  const double t = std::clamp(height / radius, -1.0, 1.0);
+  // The area of the disk's part beyond a chord t radii from its centre, over the disk's.
+  return 0.5 + (t * std::sqrt(1.0 - t * t) + std::asin(t)) / 3.141592653589793;
+}
+
 double pixelRotation(int x, int y) {
   uint32_t h = uint32_t(x) * 0x8da6b343u ^ uint32_t(y) * 0xd8163841u;
   h ^= h >> 15;

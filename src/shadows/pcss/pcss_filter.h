@@ -16,4 +16,10 @@ std::vector<double> nearestOccluders(const LightDepthMaps& maps);
 // count and for SIMD or scalar runs.
 double pixelRotation(int x, int y);
 
+// The share of a sphere light of `radius` whose centre lies `height` above the receiver's plane
+// that is above that plane (PcssOptions::horizon): the light's disk, as the receiver sees it,
+// cut by the plane's horizon line at height / radius of its radius from the centre (small
+// angles: the light is far compared with its radius). 1 for a point light.
+double aboveHorizon(double height, double radius);
+
 }  // namespace penumbra

@@ -33,15 +33,18 @@ struct PcssFace {
 struct PcssShape {
   double light_radius = 0;   // world units
   double constant_bias = 0;  // texels
+  bool plane_test = false;  // PcssOccluderTest::Plane, else Depth
   const VogelSpiral* blocker = nullptr;
   const VogelSpiral* filter = nullptr;
 };
 
 // Per point, padded to a multiple of kLookupBlock: the projected position (texels) and
 // distance w along the face's axis, the texel's world size at w, slope_bias x the receiver's
-// slope, and the pixel's turn of the spirals as its cosine and sine.
+// slope, the pixel's turn of the spirals as its cosine and sine, and the receiver's plane
+// (ReceiverPlane in shadow_map_lookup.h: a, step_x, step_y; read only for the plane test).
 struct PcssPoints {
   const double *sx, *sy, *w, *texel, *slope_bias, *turn_cos, *turn_sin;
+  const double *plane_a, *plane_x, *plane_y;
 };
 
 // visibility[p] for p in [0, n): 1 where nothing on the face lies in front of the point or no

@@ -51,22 +51,36 @@ void PcssVisibilitySimd(const PcssFace& face, const PcssShape& shape, const Pcss
     const auto diskTexelsV = [&](V d) {
       return hn::Mul(hn::Div(hn::Mul(light_radius, hn::Sub(w, d)), hn::Mul(d, w)), per_tangent);
     };
+    // The plane's arrays are read only for the plane test (the depth test may pass none).
+    const bool plane = shape.plane_test;
+    const V a = plane ? hn::LoadU(dd, pts.plane_a + p) : zero;
+    const V step_x = plane ? hn::LoadU(dd, pts.plane_x + p) : zero;
+    const V step_y = plane ? hn::LoadU(dd, pts.plane_y + p) : zero;
+    const V step = hn::Div(hn::Neg(a), w), least = hn::Mul(texel, constant_bias);
+    // The scalar twin's occludes(d, offset, dx, dy); padded lanes (w = 0) get NaN steps, and
+    // d = +infinity fails d < w, as the scalar twin's short cut does.
+    const auto occludes = [&](V d, V offset, V dx, V dy) {
+      if (!shape.plane_test) return hn::Lt(d, receiverAt(offset));
+      const V slope = hn::Add(hn::Add(step, hn::Mul(step_x, dx)), hn::Mul(step_y, dy));
+      return hn::And(hn::Lt(d, w), hn::Gt(hn::Add(a, hn::Mul(d, slope)), least));
+    };
     const auto forSpiral = [&](const VogelSpiral& spiral, V width, auto&& fn) {
       for (int k = 0; k < spiral.n; ++k) {
         const V r = hn::Mul(width, hn::Set(dd, spiral.radius[size_t(k)]));
         const V ck = hn::Set(dd, spiral.cos[size_t(k)]), sk = hn::Set(dd, spiral.sin[size_t(k)]);
         const V c = hn::Sub(hn::Mul(ck, tc), hn::Mul(sk, ts));
         const V s = hn::Add(hn::Mul(sk, tc), hn::Mul(ck, ts));
-        fn(OccluderAt(dd, face.texels, FloorToInt(dd, hn::Add(sx, hn::Mul(r, c))),
-                      FloorToInt(dd, hn::Add(sy, hn::Mul(r, s)))),
-           r);
+        const V tx = hn::Floor(hn::Add(sx, hn::Mul(r, c)));
+        const V ty = hn::Floor(hn::Add(sy, hn::Mul(r, s)));
+        fn(OccluderAt(dd, face.texels, FloorToInt(dd, tx), FloorToInt(dd, ty)), r,
+           hn::Sub(hn::Add(tx, half), sx), hn::Sub(hn::Add(ty, half), sy));
       }
     };
     // 1. Blocker search; lanes with nothing in front search a zero-width disk, ignored after.
     const V search = hn::IfThenElseZero(in_front, hn::Min(diskTexelsV(nearest), size));
     V blockers = zero, found = zero;
-    forSpiral(*shape.blocker, search, [&](V d, V offset) {
-      const auto hit = hn::Lt(d, receiverAt(offset));
+    forSpiral(*shape.blocker, search, [&](V d, V offset, V dx, V dy) {
+      const auto hit = occludes(d, offset, dx, dy);
       blockers = hn::Add(blockers, hn::IfThenElseZero(hit, d));
       found = hn::Add(found, hn::IfThenElseZero(hit, one));
     });
@@ -79,8 +93,8 @@ void PcssVisibilitySimd(const PcssFace& face, const PcssShape& shape, const Pcss
       // Lanes that stop here filter over a zero-width disk (their average would be 0 / 0).
       const V average = hn::IfThenElse(filtered, hn::Div(blockers, found), w);
       const V width = hn::IfThenElseZero(filtered, hn::Min(diskTexelsV(average), size));
-      forSpiral(*shape.filter, width, [&](V d, V offset) {
-        lit = hn::Add(lit, hn::IfThenElseZero(hn::Ge(d, receiverAt(offset)), one));
+      forSpiral(*shape.filter, width, [&](V d, V offset, V dx, V dy) {
+        lit = hn::Add(lit, hn::IfThenElseZero(hn::Not(occludes(d, offset, dx, dy)), one));
       });
     }
     hn::Store(found, dd, found_lanes);
