@@ -115,13 +115,11 @@ TechniqueInfo pcssTechnique() {
   // At radius 0 PCSS is the plain shadow map: its boundary moves by up to a texel, so it cannot
   // equal the hard volume bit for bit; held instead to a mean difference from it over covered
   // pixels (TechniqueTraits::zero_radius_mae_bound).
-  // Measured with the defaults of before the horizon and slope bias 1.5 (1024 texels, 16 + 32
-  // samples, auto projection) at the conformance suite's 160 x 107, against the volume at radius
-  // 0: spheres 0.0007, columns 0.0032, multilight 0.0004; against the 1024-ray oracle, covered /
-  // penumbra pixels: spheres 0.0039 / 0.119, columns 0.0200 / 0.059, fractal 0.0083 / 0.062,
-  // year2002 0.0083 / 0.049, multilight 0.0026 / 0.074. With today's defaults, covered: spheres
-  // 0.0011, columns 0.0196, fractal 0.0043 (penumbra 0.029), year2002 0.0080. The bounds leave
-  // half again of the largest.
+  // Measured at the conformance suite's 160 x 107 (1024 texels, 16 + 32 samples, auto
+  // projection): against the volume at radius 0, with slope bias 1, spheres 0.0007, columns
+  // 0.0032, multilight 0.0004; against the 1024-ray oracle with the defaults (slope bias 1.5,
+  // the horizon), covered pixels: spheres 0.0011, columns 0.0196, fractal 0.0043 (penumbra
+  // 0.029), year2002 0.0080. The bounds leave half again of the largest.
   info.traits.zero_radius_mae_bound = 0.005;
   info.traits.covered_mae_bound = 0.03;
   info.counters = {kShadowMapLookups, kLookupsSaved};
