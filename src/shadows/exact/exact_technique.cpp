@@ -47,6 +47,7 @@
 #include "shadows/stages/potential_edges/edge_bins.h"
 #include "shadows/stages/potential_edges/edge_screen_test.h"
 #include "shadows/stages/potential_edges/potential_edges.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/stages/silhouettes/facing_away.h"
 #include "shadows/stages/stencil/shadow_stencil.h"
 
@@ -196,11 +197,16 @@ class ExactSoftShadows final : public PreparedTechnique {
   // nothing else), kept while the light does not move: a warm frame under a still light skips
   // them. Up to kEdgeCacheLights lights, the least recently used replaced.
   std::shared_ptr<const PotentialEdges> cachedPotentialEdges(const Light& light) const;
+  // The meshes' silhouettes from the light centre (the stencil's two-sided casters) kept beside
+  // its potential edges: null until a frame under that light has found them (keepSilhouettes).
+  std::shared_ptr<const std::vector<Silhouette>> cachedSilhouettes(const Light& light) const;
+  void keepSilhouettes(const Light& light, std::vector<Silhouette> silhouettes) const;
   struct EdgeCacheEntry {
     vec3 centre{0.0f};
     float radius = 0.0f;
     uint64_t used = 0;
     std::shared_ptr<const PotentialEdges> edges;
+    std::shared_ptr<const std::vector<Silhouette>> silhouettes;
   };
   static constexpr size_t kEdgeCacheLights = 8;
   mutable std::mutex edge_cache_mutex_;
@@ -437,6 +443,23 @@ std::shared_ptr<const PotentialEdges> ExactSoftShadows::cachedPotentialEdges(
   return edges;
 }
 
+std::shared_ptr<const std::vector<Silhouette>> ExactSoftShadows::cachedSilhouettes(
+    const Light& light) const {
+  const std::lock_guard<std::mutex> lock(edge_cache_mutex_);
+  for (const EdgeCacheEntry& entry : edge_cache_)
+    if (entry.centre == light.center && entry.radius == light.radius) return entry.silhouettes;
+  return nullptr;
+}
+
+void ExactSoftShadows::keepSilhouettes(const Light& light,
+                                       std::vector<Silhouette> silhouettes) const {
+  auto kept = std::make_shared<const std::vector<Silhouette>>(std::move(silhouettes));
+  const std::lock_guard<std::mutex> lock(edge_cache_mutex_);
+  for (EdgeCacheEntry& entry : edge_cache_)
+    if (entry.centre == light.center && entry.radius == light.radius && !entry.silhouettes)
+      entry.silhouettes = std::move(kept);
+}
+
 void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, const EyeBuffers& eye,
                                        const RenderContext& context, StencilQuads& quads,
                                        Image<int32_t>& stencil,
@@ -448,6 +471,12 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
   stencil_options.policy = CasterPolicy::TwoSided;
   stencil_options.skip_own_quads = true;
   stencil_options.quads = &quads;
+  // The silhouettes from the centre depend on the light alone: found by the first frame under
+  // it, kept with its potential edges.
+  const std::shared_ptr<const std::vector<Silhouette>> known = cachedSilhouettes(light);
+  std::vector<Silhouette> found;
+  stencil_options.known_silhouettes = known.get();
+  stencil_options.found_silhouettes = &found;
   Stats edge_stats;
   const size_t passes_before = stats.time_ms.size();
   const auto start = std::chrono::steady_clock::now();
@@ -467,6 +496,7 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
       });
   const double wall =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (!known) keepSilhouettes(light, std::move(found));
   stats.add(edge_stats);
   double passes = 0.0;
   for (size_t k = passes_before; k < stats.time_ms.size(); ++k) passes += stats.time_ms[k].second;
