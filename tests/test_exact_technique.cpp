@@ -605,23 +605,30 @@ TEST(ExactTechnique, MatchesTheOracleOnTexturedLightsPerChannel) {
   EXPECT_GT(coloured, 50u);
 }
 
-// 5c. The potential edges are kept across frames while the light stays where it is
-// (ExactSoftShadows::cachedPotentialEdges). One prepared technique renders a light, the light
-// moved, and the first light again; each image must equal a freshly prepared technique's. If
-// this failed, a frame would be counted with another light's potential edges.
+// 5c. The potential edges, and the silhouettes from the light centre that the stencil extrudes,
+// are kept across frames while the light stays where it is (ExactSoftShadows::
+// cachedPotentialEdges, cachedSilhouettes). One prepared technique renders a light, the light
+// moved, and the first light again (its kept edges and silhouettes used); each image and each
+// work counter must equal a freshly prepared technique's. If this failed, a frame would be
+// counted with another light's potential edges or extruded from another light's silhouette.
 TEST(ExactTechnique, PotentialEdgesKeptAcrossFramesFollowTheLight) {
   const Frame f = makeFrame(builtinScene("spheres"), 160, 107);
   Light moved = f.scene.lights.at(0);
   moved.center += vec3(0.7f, -0.3f, 0.4f);
   const std::unique_ptr<PreparedTechnique> kept = prepareTechnique(exactConfig(64), f.scene);
-  for (const Light& light : {f.scene.lights[0], moved, f.scene.lights[0]}) {
-    const Image<float> fresh =
-        prepareTechnique(exactConfig(64), f.scene)->render(light, f.view, f.eye, {}).visibility;
-    const Image<float> again = kept->render(light, f.view, f.eye, {}).visibility;
-    ASSERT_EQ(fresh.size(), again.size());
+  for (const Light& light : {f.scene.lights[0], moved, f.scene.lights[0], f.scene.lights[0]}) {
+    const TechniqueResult fresh =
+        prepareTechnique(exactConfig(64), f.scene)->render(light, f.view, f.eye, {});
+    const TechniqueResult again = kept->render(light, f.view, f.eye, {});
+    ASSERT_EQ(fresh.visibility.size(), again.visibility.size());
     size_t differing = 0;
-    for (size_t i = 0; i < fresh.size(); ++i) differing += fresh[i] != again[i];
+    for (size_t i = 0; i < fresh.visibility.size(); ++i)
+      differing += fresh.visibility[i] != again.visibility[i];
     EXPECT_EQ(differing, 0u) << "light at " << light.center.x << ", " << light.center.y;
+    EXPECT_EQ(fresh.stats.silhouette_edges, again.stats.silhouette_edges);
+    EXPECT_EQ(fresh.stats.stencil_writes, again.stats.stencil_writes);
+    EXPECT_EQ(fresh.stats.penumbra_tests, again.stats.penumbra_tests);
+    EXPECT_EQ(fresh.stats.tiles_tested, again.stats.tiles_tested);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -80,12 +81,19 @@ bool mayContainNearPlane(const View& view, const vec3& light, const Bounds3& cas
 
 CasterVolume casterVolume(const Scene& scene, size_t m, const EyeBuffers& eye, const vec3& centre,
                           const View& view, VolumeMode mode, CasterPolicy policy, float margin) {
+  return casterVolume(scene, m, findSilhouette(scene.meshes[m], scene.adjacency[m], centre, policy),
+                      eye, centre, view, mode, margin);
+}
+
+CasterVolume casterVolume(const Scene& scene, size_t m, Silhouette silhouette,
+                          const EyeBuffers& eye, const vec3& centre, const View& view,
+                          VolumeMode mode, float margin) {
   PENUMBRA_CHECK(eye.mesh_vertex_base.size() == scene.meshes.size(),
                  "the eye buffers hold the vertices of {} meshes but the scene has {}",
                  eye.mesh_vertex_base.size(), scene.meshes.size());
   const Mesh& mesh = scene.meshes[m];
   CasterVolume v;
-  v.silhouette = findSilhouette(mesh, scene.adjacency[m], centre, policy);
+  v.silhouette = std::move(silhouette);
   v.zfail = mode == VolumeMode::ZFail ||
             (mode == VolumeMode::Auto &&
              mayContainNearPlane(view, centre, inflated(mesh.bounds(), margin)));

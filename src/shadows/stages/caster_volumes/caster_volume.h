@@ -37,6 +37,11 @@ struct CasterVolume {
 CasterVolume casterVolume(const Scene& scene, size_t m, const EyeBuffers& eye, const vec3& centre,
                           const View& view, VolumeMode mode, CasterPolicy policy,
                           float margin = 0.0f);
+// The same with mesh m's silhouette from `centre` already found (findSilhouette with the
+// caller's policy), as a caller whose light has not moved keeps it.
+CasterVolume casterVolume(const Scene& scene, size_t m, Silhouette silhouette,
+                          const EyeBuffers& eye, const vec3& centre, const View& view,
+                          VolumeMode mode, float margin = 0.0f);
 
 // Appends every vertex of `mesh` extruded to infinity away from `centre` (homogeneous w = 0)
 // to `out`, and records where vertex 0 went in volume.infinite.

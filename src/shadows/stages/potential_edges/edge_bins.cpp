@@ -446,12 +446,33 @@ void fillEdgeTest(const Region& region, const PotentialEdge& e, const Light& lig
   }
 }
 
+// The coarse tiles of a TileScan: each holds 2^step x 2^step bin tiles; its depth range is the
+// hull of theirs and each of its two depth parts the hull of the bin tiles' parts whose zmin
+// falls on that side of the middle of its range, so every depth box the bin tiles' test
+// evaluates lies inside one the coarse tile's test evaluates (and its pixel box inside the
+// coarse tile's). The test evaluates each plane in float at the box corner that decides it;
+// float rounding is monotone in each operand, so that value at a coarse tile's corner bounds
+// the value at every one of its bin tiles' corners the same way, and a coarse tile the test
+// culls holds no bin tile it would keep (the silhouette signs likewise: a sign known over the
+// coarse box is the same sign over each bin tile's).
+struct CoarseTiles {
+  int step = 0;  // 0: no coarse level, every box scanned flat
+  int columns = 0, rows = 0;
+  std::vector<float> zmin, zmax;  // padded by kTileBoxPadding, as the bin tiles' arrays
+  TileDepthParts depth_parts;
+  EdgeTileParts parts{};
+  // Bin tiles holding a covered pixel, summed over the rectangle from tile (0, 0) to (tx, ty)
+  // exclusive: entry ty (columns + 1) + tx, with `columns` the bin tiles' columns.
+  std::vector<uint32_t> covered_sum;
+};
+
 // What the scan of a region's tiles reads: the tiles' depth ranges (padded past the last tile
-// for edgeTileCandidates) and their depth parts.
+// for edgeTileCandidates), their depth parts, and the coarse tiles above them.
 struct TileScan {
   std::vector<float> zmin, zmax;
   TileDepthParts depth_parts;
   EdgeTileParts parts;
+  CoarseTiles coarse;
   EdgeTileBox box(const Region& region, const EdgeBins& bins, const View& view) const {
     EdgeTileBox box;
     box.zmin = zmin.data();
@@ -468,12 +489,136 @@ struct TileScan {
     box.parts = &parts;
     return box;
   }
+  // The bin tiles of `box` that hold a covered pixel (what the flat scan counts as tested).
+  uint32_t coveredIn(const EdgeTileBox& box) const {
+    const size_t stride = size_t(box.columns) + 1;
+    auto at = [&](int tx, int ty) { return coarse.covered_sum[size_t(ty) * stride + size_t(tx)]; };
+    return at(box.tx1 + 1, box.ty1 + 1) - at(box.tx0, box.ty1 + 1) - at(box.tx1 + 1, box.ty0) +
+           at(box.tx0, box.ty0);
+  }
 };
+
+// A part [lo, hi] (hi 0: none) widened into the hull [lo_out, hi_out] (hi_out 0: empty so far).
+void extendPart(float lo, float hi, float& lo_out, float& hi_out) {
+  if (!(hi > 0.0f)) return;
+  lo_out = hi_out > 0.0f ? std::min(lo_out, lo) : lo;
+  hi_out = std::max(hi_out, hi);
+}
+
+// The coarse tiles (CoarseTiles) of a scan's bin tiles, `columns` x `rows` of them.
+void buildCoarseTiles(TileScan& scan, int columns, int rows, int step) {
+  CoarseTiles& c = scan.coarse;
+  c.step = step;
+  const int span = 1 << step;
+  c.columns = (columns + span - 1) / span;
+  c.rows = (rows + span - 1) / span;
+  const size_t entries = size_t(c.columns) * size_t(c.rows) + kTileBoxPadding;
+  for (std::vector<float>* v : {&c.zmin, &c.zmax, &c.depth_parts.low_zmin,
+                                &c.depth_parts.low_zmax, &c.depth_parts.high_zmin,
+                                &c.depth_parts.high_zmax})
+    v->assign(entries, 0.0f);
+  const TileDepthParts& fine = scan.depth_parts;
+  for (int cy = 0; cy < c.rows; ++cy) {
+    for (int cx = 0; cx < c.columns; ++cx) {
+      const int tx0 = cx * span, tx1 = std::min(columns, tx0 + span);
+      const int ty0 = cy * span, ty1 = std::min(rows, ty0 + span);
+      float lo = 0.0f, hi = 0.0f, part_lo = 0.0f, part_hi = 0.0f;
+      for (int ty = ty0; ty < ty1; ++ty)
+        for (int tx = tx0; tx < tx1; ++tx) {
+          const size_t i = size_t(ty) * size_t(columns) + size_t(tx);
+          extendPart(scan.zmin[i], scan.zmax[i], lo, hi);
+          extendPart(fine.low_zmin[i], fine.low_zmax[i], part_lo, part_hi);
+          extendPart(fine.high_zmin[i], fine.high_zmax[i], part_lo, part_hi);
+        }
+      const size_t k = size_t(cy) * size_t(c.columns) + size_t(cx);
+      c.zmin[k] = lo;
+      c.zmax[k] = hi;
+      // Any split point is correct (each bin tile's part goes wholly into one hull).
+      const float middle = part_lo + 0.5f * (part_hi - part_lo);
+      float low_lo = 0.0f, low_hi = 0.0f, high_lo = 0.0f, high_hi = 0.0f;
+      for (int ty = ty0; ty < ty1; ++ty)
+        for (int tx = tx0; tx < tx1; ++tx) {
+          const size_t i = size_t(ty) * size_t(columns) + size_t(tx);
+          for (const auto& [part_min, part_max] :
+               {std::pair(fine.low_zmin[i], fine.low_zmax[i]),
+                std::pair(fine.high_zmin[i], fine.high_zmax[i])}) {
+            if (part_min <= middle)
+              extendPart(part_min, part_max, low_lo, low_hi);
+            else
+              extendPart(part_min, part_max, high_lo, high_hi);
+          }
+        }
+      c.depth_parts.low_zmin[k] = low_lo;
+      c.depth_parts.low_zmax[k] = low_hi;
+      c.depth_parts.high_zmin[k] = high_lo;
+      c.depth_parts.high_zmax[k] = high_hi;
+    }
+  }
+  c.parts = c.depth_parts.view();
+  const size_t stride = size_t(columns) + 1;
+  c.covered_sum.assign(stride * (size_t(rows) + 1), 0);
+  for (int ty = 0; ty < rows; ++ty) {
+    uint32_t row_sum = 0;
+    for (int tx = 0; tx < columns; ++tx) {
+      row_sum += scan.zmax[size_t(ty) * size_t(columns) + size_t(tx)] > 0.0f;
+      c.covered_sum[size_t(ty + 1) * stride + size_t(tx + 1)] =
+          c.covered_sum[size_t(ty) * stride + size_t(tx + 1)] + row_sum;
+    }
+  }
+}
+
+// Bin tiles in a box, at least, before the coarse tiles are tested first: in a smaller box the
+// coarse test costs about what it saves.
+constexpr int kCoarseMinTiles = 32;
+
+// The kept bin tiles of `box` (edgeTileCandidates: the same tiles, in row order within each run
+// of coarse tiles, and the same `tested`): in a large box the coarse tiles are tested first and only the bin tiles of
+// those kept, a run of kept coarse tiles in a row at a time. `coarse_kept` has room for every
+// coarse tile.
+int scanTiles(const EdgeScreenTest& test, const EdgeTileBox& box, const TileScan& scan,
+              bool simd, uint32_t* kept, uint32_t* coarse_kept, int& tested) {
+  const int step = scan.coarse.step;
+  if (step == 0 || (box.tx1 - box.tx0 + 1) * (box.ty1 - box.ty0 + 1) < kCoarseMinTiles)
+    return edgeTileCandidates(test, box, kept, tested, simd);
+  tested = int(scan.coveredIn(box));
+  EdgeTileBox coarse = box;
+  coarse.zmin = scan.coarse.zmin.data();
+  coarse.zmax = scan.coarse.zmax.data();
+  coarse.columns = scan.coarse.columns;
+  coarse.tx0 = box.tx0 >> step;
+  coarse.tx1 = box.tx1 >> step;
+  coarse.ty0 = box.ty0 >> step;
+  coarse.ty1 = box.ty1 >> step;
+  coarse.size = box.size << step;
+  coarse.parts = box.parts != nullptr ? &scan.coarse.parts : nullptr;
+  int coarse_tested = 0;
+  const int coarse_count = edgeTileCandidates(test, coarse, coarse_kept, coarse_tested, simd);
+  const uint32_t columns = uint32_t(coarse.columns);
+  int count = 0;
+  for (int k = 0; k < coarse_count;) {
+    const uint32_t first = coarse_kept[k];
+    int end = k + 1;
+    while (end < coarse_count && coarse_kept[end] == coarse_kept[end - 1] + 1 &&
+           coarse_kept[end] / columns == first / columns)
+      ++end;
+    const int cy = int(first / columns), cx0 = int(first % columns);
+    const int cx1 = int(coarse_kept[end - 1] % columns);
+    EdgeTileBox fine = box;
+    fine.tx0 = std::max(box.tx0, cx0 << step);
+    fine.tx1 = std::min(box.tx1, ((cx1 + 1) << step) - 1);
+    fine.ty0 = std::max(box.ty0, cy << step);
+    fine.ty1 = std::min(box.ty1, ((cy + 1) << step) - 1);
+    int fine_tested = 0;
+    count += edgeTileCandidates(test, fine, kept + count, fine_tested, simd);
+    k = end;
+  }
+  return count;
+}
 
 // Bins `count` items, item i's region made by regionOf(i), into per-tile lists (ascending item
 // order within a tile: chunks in order, then a counting sort by tile). Each region's screen
-// box goes through the tile form of the pixels' quick reject (edgeTileCandidates): a flat SIMD
-// scan of the box's tiles, row by row.
+// box goes through the tile form of the pixels' quick reject (edgeTileCandidates): a SIMD scan
+// of the box's tiles, row by row, of those in coarse tiles the same test keeps (scanTiles).
 template <class RegionOf>
 void binItems(size_t count, const RegionOf& regionOf, const std::vector<EdgeScreenTest>& tests,
               const TileScan& scan, const View& view, bool simd, EdgeBins& bins,
@@ -489,13 +634,15 @@ void binItems(size_t count, const RegionOf& regionOf, const std::vector<EdgeScre
   parallelFor(chunks, [&](size_t chunk) {
     Part& part = parts[chunk];
     std::vector<uint32_t> kept(tiles);
+    std::vector<uint32_t> coarse_kept(size_t(scan.coarse.columns) * size_t(scan.coarse.rows));
     const size_t end = std::min(count, (chunk + 1) * chunk_size);
     for (size_t i = chunk * chunk_size; i < end; ++i) {
       const Region region = regionOf(i);
       if (region.tx0 > region.tx1 || region.ty0 > region.ty1) continue;
       const EdgeTileBox box = scan.box(region, bins, view);
       int tested = 0;
-      const int kept_count = edgeTileCandidates(tests[i], box, kept.data(), tested, simd);
+      const int kept_count =
+          scanTiles(tests[i], box, scan, simd, kept.data(), coarse_kept.data(), tested);
       part.tested += uint64_t(tested);
       part.culled += uint64_t(tested - kept_count);
       for (int k = 0; k < kept_count; ++k) part.pairs.emplace_back(kept[size_t(k)], uint32_t(i));
@@ -518,7 +665,7 @@ void binItems(size_t count, const RegionOf& regionOf, const std::vector<EdgeScre
 
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
                   const DepthBuffer& depth, int level, double margin_footprints,
-                  const Bounds3& scene_bounds, bool simd) {
+                  const Bounds3& scene_bounds, bool simd, int coarse_step) {
   EdgeBins bins;
   bins.level = level;
   const int tile = 1 << level;
@@ -550,6 +697,7 @@ EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& v
   std::copy_n(range.zmax.data(), range.zmax.size(), scan.zmax.begin());
   scan.depth_parts = tileDepthParts(depth, level);
   scan.parts = scan.depth_parts.view();
+  buildCoarseTiles(scan, bins.columns, bins.rows, std::clamp(coarse_step, 0, 4));
   binItems(
       edges.edges.size(),
       [&](size_t i) {

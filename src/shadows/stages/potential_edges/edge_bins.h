@@ -56,9 +56,16 @@ TileDepthParts tileDepthParts(const DepthBuffer& depth, int level);
 
 // `scene_bounds`, when not empty, holds every visible point (Scene::bounds): the regions are cut
 // off where they leave it (widened by the margin), which keeps a shadow's streak toward its
-// vanishing point from reaching across the screen.
+// vanishing point from reaching across the screen. A region's tiles are tested hierarchically:
+// first coarse tiles of 2^coarse_step x 2^coarse_step bin tiles, each the hull of their pixel
+// boxes and depth parts, then the bin tiles of the coarse tiles kept. The coarse test is the
+// same float test on a box holding the bin tiles' boxes, so it culls only coarse tiles none of
+// whose bin tiles would be kept: the bins and their counters are those of the flat scan
+// (coarse_step 0), which the tests check.
+inline constexpr int kCoarseTileStep = 2;
 EdgeBins binEdges(const PotentialEdges& edges, const Light& light, const View& view,
                   const DepthBuffer& depth, int level, double margin_footprints,
-                  const Bounds3& scene_bounds = Bounds3(), bool simd = true);
+                  const Bounds3& scene_bounds = Bounds3(), bool simd = true,
+                  int coarse_step = kCoarseTileStep);
 
 }  // namespace penumbra

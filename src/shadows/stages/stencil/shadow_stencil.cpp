@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "raster/rasterizer.h"
@@ -91,10 +92,19 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
   if (quads != nullptr) quads->zfail.assign(scene.meshes.size(), 0);
   {
     PassTimer timer(stats, "silhouette");
+    const std::vector<Silhouette>* known = options.known_silhouettes;
+    PENUMBRA_CHECK(known == nullptr || known->size() == scene.meshes.size(),
+                   "{} silhouettes kept for {} meshes", known ? known->size() : 0,
+                   scene.meshes.size());
+    std::vector<Silhouette>* found = known == nullptr ? options.found_silhouettes : nullptr;
+    if (found != nullptr) found->assign(scene.meshes.size(), Silhouette{});
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
       if (options.casting_meshes != nullptr && !(*options.casting_meshes)[m]) continue;
       CasterVolume volume =
-          casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
+          known != nullptr
+              ? casterVolume(scene, m, (*known)[m], eye, centre, view, options.mode)
+              : casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
+      if (found != nullptr) (*found)[m] = volume.silhouette;
       stats.silhouette_edges += volume.silhouette.edges.size();
       if (quads != nullptr) quads->zfail[m] = volume.zfail ? 1 : 0;
       appendVolumePolygons(scene.meshes[m], scene.adjacency[m], scene.triangle_offsets[m],

@@ -46,6 +46,12 @@ struct ShadowStencilOptions {
   const std::vector<uint8_t>* casting_meshes = nullptr;
   // When set, receives the polygons as set up (StencilQuads).
   StencilQuads* quads = nullptr;
+  // When set, one per mesh: the meshes' silhouettes from the centre with `policy`
+  // (findSilhouette), kept by a caller whose light has not moved, used instead of finding them.
+  const std::vector<Silhouette>* known_silhouettes = nullptr;
+  // When set (and known_silhouettes is not), receives the silhouettes found, one per mesh (empty
+  // for a mesh that casts nothing).
+  std::vector<Silhouette>* found_silhouettes = nullptr;
 };
 
 // Fills the passes "silhouette" and "volumes" of `stats` and its counters.
