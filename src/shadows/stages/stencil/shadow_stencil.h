@@ -46,6 +46,9 @@ struct ShadowStencilOptions {
   const std::vector<uint8_t>* casting_meshes = nullptr;
   // When set, receives the polygons as set up (StencilQuads).
   StencilQuads* quads = nullptr;
+  // When set, the debug layers of the silhouettes (kSilhouetteEdgesLayer) and of the tile
+  // culling (kCulledTilesLayer) are added to it (shadows/technique.h).
+  std::vector<DebugLayer>* debug_layers = nullptr;
 };
 
 // Fills the passes "silhouette" and "volumes" of `stats` and its counters.
