@@ -26,13 +26,16 @@ void drawWorldSegment(const View& view, const vec3& a, const vec3& b, Image<floa
   // One step per pixel along the longer axis, the line clipped to a margin around the image so
   // that an edge reaching far off screen does not take millions of steps.
   const double span = std::max(std::abs(pb.x - pa.x), std::abs(pb.y - pa.y));
+  if (!std::isfinite(span)) return;  // a degenerate view: nothing to draw
   const double limit = 4.0 * double(std::max(view.width, view.height));
   const int steps = int(std::min(std::ceil(span), limit));
   for (int i = 0; i <= steps; ++i) {
     const double t = steps == 0 ? 0.0 : double(i) / steps;
-    const int x = int(std::floor(pa.x + (pb.x - pa.x) * t));
-    const int y = int(std::floor(pa.y + (pb.y - pa.y) * t));
-    if (x >= 0 && y >= 0 && x < layer.width() && y < layer.height()) layer.at(x, y) += 1.0f;
+    const double x = std::floor(pa.x + (pb.x - pa.x) * t);
+    const double y = std::floor(pa.y + (pb.y - pa.y) * t);
+    // Tested as doubles before converting: a point far off screen does not fit an int.
+    if (!(x >= 0.0 && y >= 0.0 && x < layer.width() && y < layer.height())) continue;
+    layer.at(int(x), int(y)) += 1.0f;
   }
 }
 
