@@ -35,6 +35,15 @@ wait 2
 wait-oracle 4
 wait 2" --technique wedge-3pass
 
-# Overlays: the penumbra pixels of exact soft shadow volumes tinted over the frame.
-shot overlays spheres "overlay penumbra
+# Overlays, the technique's debug layers (DebugLayer, include/penumbra/shadows/technique.h):
+# the wedges' footprints after tile culling, the silhouette edges they are built on, the
+# culled tiles of both passes.
+shot overlays spheres "overlay wedge-footprints
+wait 4" --technique wedge-3pass
+shot silhouettes columns "overlay silhouette-edges
+wait 4" --technique wedge-3pass
+shot culled-tiles columns "overlay culled-tiles
+wait 4" --technique wedge-3pass
+# The penumbra pixels of exact soft shadow volumes tinted over the frame.
+shot penumbra spheres "overlay penumbra
 wait 4" --technique exact

@@ -26,7 +26,21 @@ Rgb8Image depthImage(const FrameResult& frame);
 // works on it: a tile with a small range is cheap to classify), stretched over the frame's.
 Rgb8Image tileRangeImage(const FrameResult& frame);
 
+// `light`'s debug layer `name` (DebugLayer, shadows/technique.h) over the shaded frame, dimmed
+// to a third: each pixel with a value coloured by it on the heat map's scale (brightest at the
+// frame's largest value), silhouette edges in yellow. The dimmed frame alone when the technique
+// published no such layer (frameHasLayer).
+Rgb8Image debugLayerImage(const FrameResult& frame, size_t light, const std::string& name);
+bool frameHasLayer(const FrameResult& frame, size_t light, const std::string& name);
+
 Rgb8Image overlayImage(const FrameResult& frame, Overlay overlay, size_t light);
+
+// Pixels as the window's texture takes them: 32 bits, 0xFFRRGGBB (SDL's ARGB8888), rows
+// `pitch` bytes apart. The shaded frame is encoded straight into them (the frame the window
+// shows most, converted once, with no 24-bit image between); anything else is packed from its
+// RGB image.
+void shadedPixels(const FrameResult& frame, void* pixels, int pitch);
+void packPixels(const Rgb8Image& image, void* pixels, int pitch);
 
 // The technique against the oracle over the pixels showing geometry.
 struct Comparison {

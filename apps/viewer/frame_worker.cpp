@@ -1,5 +1,6 @@
 #include "frame_worker.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -11,7 +12,8 @@ std::string preparedKey(const TechniqueConfig& technique, const RenderContext& c
   for (const OptionSpec& spec : technique.info().options.specs()) {
     key += fmt::format(" {}={}", spec.name, technique.get(spec.name));
   }
-  return key + fmt::format(" threads={} simd={}", context.threads, context.simd);
+  return key + fmt::format(" threads={} simd={} layers={}", context.threads, context.simd,
+                           context.debug_layers);
 }
 
 FrameWorker::FrameWorker(Scene scene) : scene_(std::move(scene)) {
@@ -109,21 +111,34 @@ std::shared_ptr<FrameResult> FrameWorker::recycledFrame() {
   return pool_.back();
 }
 
+FrameRenderer& FrameWorker::preparedRenderer(const FrameRequest& request,
+                                             DeliveredFrame& delivered) {
+  constexpr size_t kKept = 3;  // the full frame, its preview, and one more (layers on or off)
+  const std::string key = preparedKey(request.technique, request.context);
+  auto found = std::find_if(renderers_.begin(), renderers_.end(),
+                            [&](const auto& entry) { return entry.first == key; });
+  if (found == renderers_.end()) {
+    if (renderers_.size() == kKept) renderers_.pop_back();
+    auto renderer = std::make_unique<FrameRenderer>(
+        scene_, FrameOptions{request.technique, 0, 0, request.context});
+    delivered.prepare_ms = renderer->prepareMs();
+    renderers_.emplace(renderers_.begin(), key, std::move(renderer));
+  } else {
+    std::rotate(renderers_.begin(), found, found + 1);
+  }
+  return *renderers_.front().second;
+}
+
 DeliveredFrame FrameWorker::render(const FrameRequest& request) {
   DeliveredFrame delivered;
   delivered.generation = request.generation;
+  delivered.sequence = ++sequence_;
   delivered.preview = request.preview;
+  delivered.preview_options = request.preview_options;
   try {
     // Preparing depends on the geometry only (the oracle's BVH, say), which never changes here:
     // a new camera, new lights or a new size reuse the prepared technique.
-    const std::string key = preparedKey(request.technique, request.context);
-    if (!renderer_ || key != renderer_key_) {
-      renderer_.reset();
-      renderer_ = std::make_unique<FrameRenderer>(
-          scene_, FrameOptions{request.technique, 0, 0, request.context});
-      renderer_key_ = key;
-      delivered.prepare_ms = renderer_->prepareMs();
-    }
+    FrameRenderer& renderer = preparedRenderer(request, delivered);
     // The renderer reads the scene's camera, lights and size at every frame (width 0 above).
     scene_.camera = request.camera;
     scene_.lights = request.lights;
@@ -131,7 +146,7 @@ DeliveredFrame FrameWorker::render(const FrameRequest& request) {
     scene_.settings.height = request.height;
     std::shared_ptr<FrameResult> frame = recycledFrame();
     const auto start = std::chrono::steady_clock::now();
-    renderer_->render(*frame);
+    renderer.render(*frame);
     delivered.render_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     delivered.frame = std::move(frame);

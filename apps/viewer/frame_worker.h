@@ -22,12 +22,17 @@ struct FrameRequest {
   TechniqueConfig technique;
   RenderContext context;
   int width = 0, height = 0;  // the size to render at (a preview's is smaller)
-  bool preview = false;       // rendered smaller while the user drags
+  bool preview = false;       // rendered smaller, or with fewer samples, while the user drags
+  std::vector<std::string> preview_options;  // "samples 16": options the preview lowered
 };
 
 struct DeliveredFrame {
   uint64_t generation = 0;
+  // Counts the worker's frames from 1: what the window shows is keyed by it (a recycled
+  // FrameResult keeps its address with new pixels).
+  uint64_t sequence = 0;
   bool preview = false;
+  std::vector<std::string> preview_options;  // as the request's
   std::shared_ptr<const FrameResult> frame;  // null when rendering failed
   std::string error;                         // why it failed
   double render_ms = 0;                      // FrameRenderer::render, wall clock
@@ -59,11 +64,13 @@ class FrameWorker {
  private:
   void run();
   DeliveredFrame render(const FrameRequest& request);
+  FrameRenderer& preparedRenderer(const FrameRequest& request, DeliveredFrame& delivered);
   std::shared_ptr<FrameResult> recycledFrame();
 
   Scene scene_;
-  std::unique_ptr<FrameRenderer> renderer_;
-  std::string renderer_key_;  // the technique and context the renderer was prepared with
+  // The renderers prepared last, newest first, each with what it was prepared with
+  // (preparedKey): a preview with fewer samples and the full frame after it each keep theirs.
+  std::vector<std::pair<std::string, std::unique_ptr<FrameRenderer>>> renderers_;
   std::vector<std::shared_ptr<FrameResult>> pool_;  // frames handed out, reused when returned
   mutable std::mutex mutex_;
   std::condition_variable wake_;
@@ -76,6 +83,7 @@ class FrameWorker {
   std::optional<FrameRequest> last_;  // what `repeat` renders again
   std::chrono::steady_clock::time_point repeat_start_;
   std::vector<double> finish_times_;
+  uint64_t sequence_ = 0;  // the worker thread's own
   std::thread thread_;
 };
 

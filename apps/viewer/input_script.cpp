@@ -22,7 +22,7 @@ const std::map<std::string, Arity>& commandArity() {
       {"key", {1, 1}},           {"technique", {1, 1}},     {"option", {2, 2}},
       {"light", {1, 1}},         {"light-radius", {1, 1}},  {"light-intensity", {1, 1}},
       {"overlay", {1, 1}},       {"compare", {1, 1}},       {"preview-scale", {1, 1}},
-      {"threads", {1, 1}},       {"simd", {1, 1}},          {"save-scene", {1, 1}},
+      {"preview-samples", {1, 1}}, {"threads", {1, 1}},       {"simd", {1, 1}},          {"save-scene", {1, 1}},
       {"screenshot", {1, 1}},    {"window-screenshot", {1, 1}}, {"wait-oracle", {1, 1}}};
   return arity;
 }

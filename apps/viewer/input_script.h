@@ -16,7 +16,8 @@
 //   light INDEX | light-radius R | light-intensity I
 //   overlay shaded|visibility|penumbra|depth|tiles
 //   compare off|split|heatmap
-//   preview-scale S | threads N | simd on|off
+//   overlay silhouette-edges|wedge-footprints|culled-tiles   (the technique's debug layers)
+//   preview-scale S | preview-samples on|off | threads N | simd on|off
 //   save-scene FILE | screenshot FILE | window-screenshot FILE
 //                                    once the events pushed so far are handled and the
 //                                    full-size frame of the view is rendered

@@ -152,9 +152,11 @@ void ViewerApp::runScriptCommand(const ScriptCommand& command) {
   } else if (name == "light-intensity") {
     setLightIntensity(model_, parseArgFloat(command, 0));
   } else if (name == "overlay") {
-    model_.overlay = parseOverlay(arg(0));
+    setOverlay(model_, parseOverlay(arg(0)));
   } else if (name == "compare") {
     model_.compare = parseCompareMode(arg(0));
+  } else if (name == "preview-samples") {
+    model_.preview_samples = parseFlag(arg(0), "preview-samples");
   } else if (name == "preview-scale") {
     model_.preview_scale = std::clamp(parseArgFloat(command, 0), 0.05f, 1.0f);
   } else if (name == "threads") {

@@ -67,6 +67,11 @@ void ViewerApp::openWindow() {
                              SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, 0);
   PENUMBRA_CHECK(window_ != nullptr, "cannot open a window: {}", SDL_GetError());
   // The software renderer works everywhere (Xvfb, no GPU); the frames are CPU images anyway.
+  // Its window surface goes to the X server directly (shared memory), not through an OpenGL
+  // texture: without a GPU that is Mesa's llvmpipe, whose threads and copies cost the frames
+  // more than the window's drawing itself (bench/README.md). An environment variable
+  // SDL_FRAMEBUFFER_ACCELERATION still decides, as SDL documents.
+  SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
   renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
   PENUMBRA_CHECK(renderer_ != nullptr, "cannot create a renderer: {}", SDL_GetError());
   IMGUI_CHECKVERSION();
@@ -103,35 +108,37 @@ int ViewerApp::run() {
     SDL_Event event;
     while (SDL_PollEvent(&event)) handleEvent(event);
     // A slider held down counts as dragging: previews until it is let go.
-    requestFrame(input_this_frame_ || drag_button_ != 0 || ImGui::IsAnyItemActive());
+    const bool interacting = input_this_frame_ || drag_button_ != 0 || ImGui::IsAnyItemActive();
+    requestFrame(interacting);
     takeFrame();
     updateOracle();
-    const auto now = std::chrono::steady_clock::now();
-    const auto since_present = now - last_present_;
-    if (since_present >= kPresentInterval || input_this_frame_) {
-      drawWindow();
-      last_present_ = now;
-    }
-    // --quit-after counts the frames after the script has run to its end (a script waiting
-    // for the oracle may take any number of frames).
+    drawIfDue(interacting || imgui_settle_ > 0);
+    // --quit-after counts the loop's turns after the script has run to its end (a script
+    // waiting for the oracle may take any number of turns).
     const bool script_done = script_next_ == script_.size() && script_wait_frames_ == 0 &&
                              script_wait_passes_ == 0;
     if (script_done) ++window_frames_;
     if (args_.quit_after > 0 && window_frames_ >= args_.quit_after) quit_ = true;
     const bool script_running = !script_done && script_wait_passes_ == 0;
-    if (!quit_ && !script_running) {
-      // Sleep until the worker delivers or an event comes, not spin: the worker needs the cores.
-      // Never past the next presentation, when a frame waits to be shown.
-      const int wait_ms = last_present_ == now ? kIdleWaitMs : int(kPresentInterval.count());
-      if (frames_->busy()) {
-        frames_->waitForFrame(wait_ms);
-      } else {
-        SDL_WaitEventTimeout(nullptr, wait_ms);
-      }
-    }
+    if (!quit_ && !script_running) waitForWork(interacting || imgui_settle_ > 0);
   }
   saveOnQuit();
   return 0;
+}
+
+void ViewerApp::waitForWork(bool interacting) {
+  // Each turn of the loop asks the X server for events: several system calls, which cost the
+  // renderer more than drawing the window once woken for every frame the worker finishes
+  // (bench/README.md). So until the pacer lets the window draw, only an event wakes the loop;
+  // then a finished frame does too, to be shown as it arrives.
+  const double until_draw = pacer_.untilDue(std::chrono::steady_clock::now(), interacting);
+  if (until_draw > 0.0) {
+    SDL_WaitEventTimeout(nullptr, std::clamp(int(std::ceil(until_draw)), 1, kIdleWaitMs));
+  } else if (frames_->busy()) {
+    frames_->waitForFrame(kIdleWaitMs);
+  } else {
+    SDL_WaitEventTimeout(nullptr, kIdleWaitMs);
+  }
 }
 
 bool ViewerApp::frameAreaEvent(const SDL_Event& event) const {
@@ -150,6 +157,8 @@ bool ViewerApp::frameAreaEvent(const SDL_Event& event) const {
 }
 
 void ViewerApp::handleEvent(const SDL_Event& event) {
+  // Dear ImGui sees an event at its next frame, and hover or a popup settles a frame later.
+  imgui_settle_ = 2;
   // The frame area's mouse events are the camera's and the lights': the panel never sees them
   // (a scripted drag would otherwise click wherever the panel thinks the pointer is).
   if (!frameAreaEvent(event)) ImGui_ImplSDL2_ProcessEvent(&event);
@@ -169,7 +178,8 @@ void ViewerApp::handleEvent(const SDL_Event& event) {
       if (key == SDLK_l) selectLight(model_, (model_.selected_light + 1) % model_.lights.size());
       if (key == SDLK_s) {
         ++saved_count_;
-        saveScreenshotNow(fmt::format("out/viewer-{}.png", saved_count_), "");
+        saveScreenshotNow(fmt::format("out/viewer-{}.png", saved_count_),
+                          fmt::format("out/viewer-{}-visibility.exr", saved_count_));
         saveSceneNow(fmt::format("out/viewer-{}.json", saved_count_));
       }
       break;
@@ -217,10 +227,14 @@ FrameRequest ViewerApp::makeRequest(bool preview) const {
   request.technique = techniqueConfig(model_);
   request.context.threads = model_.threads;
   request.context.simd = model_.simd;
+  request.context.debug_layers = !overlayLayer(model_.overlay).empty();
   const float scale = preview ? std::clamp(model_.preview_scale, 0.05f, 1.0f) : 1.0f;
   request.width = std::max(1, int(std::lround(model_.width * scale)));
   request.height = std::max(1, int(std::lround(model_.height * scale)));
-  request.preview = preview && scale < 1.0f;
+  if (preview && model_.preview_samples) {
+    request.technique = previewConfig(model_, request.preview_options);
+  }
+  request.preview = preview && (scale < 1.0f || !request.preview_options.empty());
   return request;
 }
 
@@ -253,19 +267,33 @@ void ViewerApp::takeFrame() {
 }
 
 void ViewerApp::updateOracle() {
-  comparison_.reset();
   if (model_.compare == CompareMode::Off) {
     oracle_->stop();
+    oracle_image_.reset();
+    comparison_.reset();
     return;
   }
   // The oracle works on the full-size frame of the current view only.
-  if (!have_full_ || full_.generation != model_.generation) return;
-  oracle_->restart(full_.generation, full_.frame, model_.lights, model_.selected_light);
-  if (const std::optional<OracleImage> oracle = oracle_->latest()) {
-    if (oracle->generation == full_.generation) {
-      comparison_ = compareWithOracle(*full_.frame, *oracle, model_.compare_tolerance);
-    }
+  if (!have_full_ || full_.generation != model_.generation) {
+    comparison_.reset();
+    return;
   }
+  oracle_->restart(full_.generation, full_.frame, model_.lights, model_.selected_light);
+  std::optional<OracleImage> oracle = oracle_->latest();
+  if (!oracle || oracle->generation != full_.generation) {
+    oracle_image_.reset();
+    comparison_.reset();
+    return;
+  }
+  // Compared again only when the oracle has a new pass or the tolerance moved.
+  const bool same = oracle_image_ && comparison_ && oracle_image_->passes == oracle->passes &&
+                    oracle_image_->generation == oracle->generation &&
+                    oracle_image_->light == oracle->light &&
+                    compared_tolerance_ == model_.compare_tolerance;
+  if (same) return;
+  comparison_ = compareWithOracle(*full_.frame, *oracle, model_.compare_tolerance);
+  compared_tolerance_ = model_.compare_tolerance;
+  oracle_image_ = std::move(oracle);
 }
 
 std::string ViewerApp::levelText() const {
@@ -274,6 +302,9 @@ std::string ViewerApp::levelText() const {
   std::string text = shown_.preview ? fmt::format("preview {}x{} (of {}x{})", w, h, model_.width,
                                                   model_.height)
                                     : fmt::format("full {}x{}", w, h);
+  if (shown_.preview && !shown_.preview_options.empty()) {
+    text += fmt::format(", {}", fmt::join(shown_.preview_options, ", "));
+  }
   if (frames_->busy()) text += ", rendering";
   return text;
 }

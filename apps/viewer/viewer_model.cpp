@@ -13,7 +13,8 @@ namespace {
 const std::vector<std::pair<Overlay, const char*>> kOverlayNames = {
     {Overlay::Shaded, "shaded"},   {Overlay::Visibility, "visibility"},
     {Overlay::Penumbra, "penumbra"}, {Overlay::Depth, "depth"},
-    {Overlay::TileDepthRange, "tiles"}};
+    {Overlay::TileDepthRange, "tiles"}, {Overlay::SilhouetteEdges, "silhouette-edges"},
+    {Overlay::WedgeFootprints, "wedge-footprints"}, {Overlay::CulledTiles, "culled-tiles"}};
 const std::vector<std::pair<CompareMode, const char*>> kCompareNames = {
     {CompareMode::Off, "off"}, {CompareMode::Split, "split"}, {CompareMode::Heatmap, "heatmap"}};
 
@@ -61,10 +62,25 @@ Light& selected(ViewerModel& model) {
 std::string overlayName(Overlay overlay) { return nameOf(kOverlayNames, overlay); }
 std::string compareModeName(CompareMode mode) { return nameOf(kCompareNames, mode); }
 const std::vector<Overlay>& allOverlays() {
-  static const std::vector<Overlay> all = {Overlay::Shaded, Overlay::Visibility,
-                                           Overlay::Penumbra, Overlay::Depth,
-                                           Overlay::TileDepthRange};
+  static const std::vector<Overlay> all = {
+      Overlay::Shaded,         Overlay::Visibility,      Overlay::Penumbra,
+      Overlay::Depth,          Overlay::TileDepthRange,  Overlay::SilhouetteEdges,
+      Overlay::WedgeFootprints, Overlay::CulledTiles};
   return all;
+}
+
+std::string overlayLayer(Overlay overlay) {
+  switch (overlay) {
+    case Overlay::SilhouetteEdges: return kSilhouetteEdgesLayer;
+    case Overlay::WedgeFootprints: return kWedgeFootprintsLayer;
+    case Overlay::CulledTiles: return kCulledTilesLayer;
+    default: return "";
+  }
+}
+
+void setOverlay(ViewerModel& model, Overlay overlay) {
+  if (overlayLayer(overlay).empty() != overlayLayer(model.overlay).empty()) ++model.generation;
+  model.overlay = overlay;
 }
 const std::vector<CompareMode>& allCompareModes() {
   static const std::vector<CompareMode> all = {CompareMode::Off, CompareMode::Split,
@@ -121,6 +137,27 @@ void setOption(ViewerModel& model, const std::string& name, const std::string& v
 
 TechniqueConfig techniqueConfig(const ViewerModel& model) {
   return configOf(currentTechnique(model));
+}
+
+TechniqueConfig previewConfig(const ViewerModel& model, std::vector<std::string>& changed) {
+  changed.clear();
+  TechniqueConfig config = techniqueConfig(model);
+  for (const OptionControl& option : currentTechnique(model).options) {
+    const OptionSpec& spec = *option.spec;
+    if (spec.preview.empty() || spec.preview == option.value) continue;
+    // Only where it is cheaper: fewer samples than set, never more.
+    if (spec.kind == OptionKind::Integer && std::stoll(spec.preview) >= std::stoll(option.value))
+      continue;
+    try {
+      config.set(spec.name, spec.preview);
+      config.validate();
+    } catch (const Error&) {
+      config.set(spec.name, option.value);  // refused with the other options: keep the value
+      continue;
+    }
+    changed.push_back(spec.name + " " + spec.preview);
+  }
+  return config;
 }
 
 std::vector<std::string> renderFlags(const ViewerModel& model) {

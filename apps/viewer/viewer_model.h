@@ -24,10 +24,24 @@ struct TechniqueEntry {
   std::vector<OptionControl> options;  // the table's order
 };
 
-// What the frame area shows.
-enum class Overlay { Shaded, Visibility, Penumbra, Depth, TileDepthRange };
+// What the frame area shows. The last three are the technique's debug layers (DebugLayer,
+// shadows/technique.h), rendered only while one of them is shown.
+enum class Overlay {
+  Shaded,
+  Visibility,
+  Penumbra,
+  Depth,
+  TileDepthRange,
+  SilhouetteEdges,
+  WedgeFootprints,
+  CulledTiles,
+};
 enum class CompareMode { Off, Split, Heatmap };
-std::string overlayName(Overlay overlay);  // "shaded", "visibility", "penumbra", "depth", "tiles"
+// "shaded", "visibility", "penumbra", "depth", "tiles", "silhouette-edges", "wedge-footprints",
+// "culled-tiles"
+std::string overlayName(Overlay overlay);
+// The debug layer an overlay shows (kSilhouetteEdgesLayer...), or empty for the others.
+std::string overlayLayer(Overlay overlay);
 std::string compareModeName(CompareMode mode);  // "off", "split", "heatmap"
 const std::vector<Overlay>& allOverlays();
 const std::vector<CompareMode>& allCompareModes();
@@ -45,6 +59,9 @@ struct ViewerModel {
   // While the user drags, frames render at this fraction of the size, refined when the view
   // rests (1: always full size).
   float preview_scale = 0.5f;
+  // While the user drags, the options with a preview value (fewer samples or rays:
+  // OptionSpec::preview) take it too.
+  bool preview_samples = true;
   int threads = 0;  // 0: all cores
   bool simd = true;
   Overlay overlay = Overlay::Shaded;
@@ -72,6 +89,12 @@ void selectTechnique(ViewerModel& model, const std::string& name);
 void setOption(ViewerModel& model, const std::string& name, const std::string& value);
 // The current technique with its option values.
 TechniqueConfig techniqueConfig(const ViewerModel& model);
+// The same with every option that has a cheaper preview value (OptionSpec::preview) set to it;
+// `changed` receives "NAME VALUE" for each, empty when the preview renders like the full frame.
+TechniqueConfig previewConfig(const ViewerModel& model, std::vector<std::string>& changed);
+// Shows `overlay`; a switch to or from a debug layer bumps the generation (the frame must be
+// rendered with or without the layers).
+void setOverlay(ViewerModel& model, Overlay overlay);
 // The `penumbra render` flags that select the current technique and its option values, for
 // reproducing a frame from a saved scene file.
 std::vector<std::string> renderFlags(const ViewerModel& model);

@@ -116,9 +116,14 @@ void lightSection(ViewerModel& model) {
   }
 }
 
-void frameSection(ViewerModel& model) {
+void frameSection(ViewerModel& model, const PanelView& view) {
   if (!ImGui::CollapsingHeader("Frame", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::SliderFloat("preview scale", &model.preview_scale, 0.125f, 1.0f, "%.3f");
+  ImGui::Checkbox("fewer samples while dragging", &model.preview_samples);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("options with a preview value (exact's samples, the oracle's rays) take "
+                      "it while the view moves");
+  }
   if (ImGui::SliderInt("threads", &model.threads, 0, 16, model.threads == 0 ? "all" : "%d")) {
     ++model.generation;
   }
@@ -126,11 +131,12 @@ void frameSection(ViewerModel& model) {
   if (ImGui::BeginCombo("overlay", overlayName(model.overlay).c_str())) {
     for (Overlay overlay : allOverlays()) {
       if (ImGui::Selectable(overlayName(overlay).c_str(), overlay == model.overlay)) {
-        model.overlay = overlay;
+        setOverlay(model, overlay);
       }
     }
     ImGui::EndCombo();
   }
+  if (!view.overlay_note.empty()) ImGui::TextWrapped("%s", view.overlay_note.c_str());
 }
 
 void compareSection(ViewerModel& model, const PanelView& view) {
@@ -158,7 +164,6 @@ void compareSection(ViewerModel& model, const PanelView& view) {
 
 void statsSection(const PanelView& view) {
   if (!ImGui::CollapsingHeader("Timings and counters", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  ImGui::Text("level: %s", view.level.c_str());
   if (view.frame_ms && !view.frame_ms->empty()) {
     const std::vector<float> ms(view.frame_ms->begin(), view.frame_ms->end());
     std::vector<float> sorted = ms;
@@ -208,10 +213,12 @@ PanelRequests drawPanel(ViewerModel& model, const PanelView& view, float x, floa
   if (ImGui::Button("Save screenshot")) requests.save_screenshot = true;
   ImGui::SameLine();
   if (ImGui::Button("Save scene")) requests.save_scene = true;
+  // The level of detail on screen: a preview while dragging, then the refined frame.
+  ImGui::TextColored(ImVec4(1.0f, 1.0f, 0.0f, 1.0f), "%s", view.level.c_str());
   if (!view.message.empty()) ImGui::TextWrapped("%s", view.message.c_str());
   techniqueSection(model, requests);
   lightSection(model);
-  frameSection(model);
+  frameSection(model, view);
   compareSection(model, view);
   statsSection(view);
   ImGui::PopItemWidth();

@@ -19,6 +19,7 @@ struct PanelView {
   std::optional<Comparison> comparison;
   std::string level;    // "full 640x427" or "preview 1/2 (320x213)"
   std::string message;  // the last error or saved file
+  std::string overlay_note;  // what the debug layer shown counts, or that there is none
 };
 
 struct PanelRequests {

@@ -13,7 +13,27 @@ namespace penumbra {
 // Culling tiles visited and culled, the tiles_tested / tiles_culled counters.
 struct CullTally {
   uint64_t tested = 0, culled = 0;
+  // When set (a debug layer, kCulledTilesLayer in shadows/technique.h): 1 is added to every
+  // pixel of each culled tile. A bin tile's walk writes its own pixels only, so the bin tiles'
+  // workers may share it.
+  Image<float>* culled_layer = nullptr;
 };
+
+// Adds 1 to the culled layer over the culling tiles of level `level` that the rect of `e`
+// reaches, within its bin tile and the image.
+inline void markCulledTiles(const CullTally& tally, const TileEdges& e, int level) {
+  if (tally.culled_layer == nullptr) return;
+  Image<float>& layer = *tally.culled_layer;
+  const int size = 1 << level;
+  const int x0 = std::max(e.tx0, (e.x0 >> level) << level);
+  const int y0 = std::max(e.ty0, (e.y0 >> level) << level);
+  const int x1 = std::min({((e.x1 >> level) << level) + size - 1, e.tx0 + kBinTileSize - 1,
+                           layer.width() - 1});
+  const int y1 = std::min({((e.y1 >> level) << level) + size - 1, e.ty0 + kBinTileSize - 1,
+                           layer.height() - 1});
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) layer.at(x, y) += 1.0f;
+}
 
 // True when `rect` (set up by setupRectEdges) is its whole cell and every pixel of it is inside
 // the triangle. A cell is a culling tile of level `level` within the rect's bin tile (a culling
@@ -104,6 +124,7 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
   auto cullAll = [&] {
     tally.tested += tiles;
     tally.culled += tiles;
+    markCulledTiles(tally, e, level);
   };
   auto keepWhole = [&](const TileEdges& sub, int code) {
     if ((code & whole_bits) == 0 || coversCell(sub, level, depth.width(), depth.height()))
@@ -153,6 +174,7 @@ void forEachCullRect(const SetupTriangle& t, TileEdges& e, const DepthBuffer& de
         code = decide(sub, range.zmin.at(cx, cy), range.zmax.at(cx, cy));
         ++tally.tested;
         tally.culled += code == 0;
+        if (code == 0) markCulledTiles(tally, sub, level);
         if (code != 0) code = keepWhole(sub, code);
       }
       if (code == run_code && cx <= cx_last) {

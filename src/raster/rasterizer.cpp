@@ -158,6 +158,7 @@ void rasterizeStencil(const std::vector<SetupTriangle>& setup, const DepthBuffer
                               [](int32_t s) { return s == 0; }));
   const TileBins bins = binTriangles(setup, width, height);
   std::vector<TileCounts> counts(bins.tileCount());
+  for (TileCounts& c : counts) c.tally.culled_layer = options.culled_layer;
   parallelFor(bins.tileCount(), [&](size_t tile) {
     const TileBox box = tileBox(bins, tile, width, height);
     TileCounts& c = counts[tile];

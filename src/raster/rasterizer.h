@@ -40,6 +40,8 @@ struct StencilOptions {
   // The eye pass's primitive ids, needed when polygons have owners (ClipTriangles::owners):
   // they are not counted at their owners' pixels. Null: owners are ignored.
   const Image<uint32_t>* primitive = nullptr;
+  // A debug layer that counts the culled tiles per pixel (CullTally::culled_layer); null: none.
+  Image<float>* culled_layer = nullptr;
 };
 
 // Adds every triangle's contribution to the stencil where its depth rule holds. The payload is

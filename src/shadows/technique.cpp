@@ -105,4 +105,23 @@ TechniqueResult renderShadows(const TechniqueConfig& config, const Scene& scene,
   return prepareTechnique(config, scene)->render(light, view, eye, context);
 }
 
+Image<float>& debugLayer(std::vector<DebugLayer>& layers, const std::string& name,
+                         const std::string& description, int width, int height) {
+  for (DebugLayer& layer : layers) {
+    if (layer.name != name) continue;
+    PENUMBRA_CHECK(layer.values.width() == width && layer.values.height() == height,
+                   "debug layer '{}' is {}x{}, asked for at {}x{}", name, layer.values.width(),
+                   layer.values.height(), width, height);
+    return layer.values;
+  }
+  layers.push_back({name, description, Image<float>(width, height, 0.0f)});
+  return layers.back().values;
+}
+
+const DebugLayer* findDebugLayer(const std::vector<DebugLayer>& layers, const std::string& name) {
+  for (const DebugLayer& layer : layers)
+    if (layer.name == name) return &layer;
+  return nullptr;
+}
+
 }  // namespace penumbra

@@ -34,6 +34,7 @@ const bool kProbeRegistered = [] {
   info.summary = "a technique only this test binary knows";
   info.options = OptionTableBuilder<ProbeOptions>()
                      .integer("probe-taps", "taps", &ProbeOptions::taps, 1, 9)
+                     .preview("2")
                      .flag("probe-mirror", "mirror", &ProbeOptions::mirror)
                      .number("probe-softness", "softness", &ProbeOptions::softness, 0.0, 1.0)
                      .choice("probe-mode", "near or far", &ProbeOptions::mode,
@@ -138,6 +139,40 @@ TEST(ViewerModel, OverlayAndCompareNamesRoundTrip) {
     EXPECT_EQ(parseCompareMode(compareModeName(mode)), mode);
   }
   EXPECT_THROW(parseOverlay("wedges"), Error);
+}
+
+// A preview lowers the options that declare a cheaper value (the probe's taps: 2), and only
+// where that is cheaper than the value set; the full frame keeps the value set.
+TEST(ViewerModel, PreviewTakesTheCheaperOptionValues) {
+  ViewerModel model = makeViewerModel(builtinScene("spheres"), "viewer-test-probe");
+  std::vector<std::string> changed;
+  EXPECT_EQ(previewConfig(model, changed).options<ProbeOptions>().taps, 2);
+  EXPECT_EQ(changed, (std::vector<std::string>{"probe-taps 2"}));
+  EXPECT_EQ(techniqueConfig(model).options<ProbeOptions>().taps, 3);
+  setOption(model, "probe-taps", "1");  // already cheaper than the preview's
+  EXPECT_EQ(previewConfig(model, changed).options<ProbeOptions>().taps, 1);
+  EXPECT_TRUE(changed.empty());
+  // exact declares fewer samples for previews: a technique of the table, not only the probe.
+  selectTechnique(model, "exact");
+  const int samples = techniqueConfig(model).options<ExactOptions>().samples;
+  EXPECT_LT(previewConfig(model, changed).options<ExactOptions>().samples, samples);
+  EXPECT_EQ(changed.size(), 1u);
+}
+
+// Switching to or from a debug layer renders the frame again (with or without the layers);
+// between two ordinary overlays the frame stays.
+TEST(ViewerModel, DebugLayerOverlaysRenderAgain) {
+  ViewerModel model = makeViewerModel(builtinScene("spheres"), "wedge-3pass");
+  const uint64_t start = model.generation;
+  setOverlay(model, Overlay::Depth);
+  EXPECT_EQ(model.generation, start);
+  setOverlay(model, Overlay::WedgeFootprints);
+  EXPECT_EQ(model.generation, start + 1);
+  EXPECT_EQ(overlayLayer(model.overlay), kWedgeFootprintsLayer);
+  setOverlay(model, Overlay::CulledTiles);
+  EXPECT_EQ(model.generation, start + 1);
+  setOverlay(model, Overlay::Shaded);
+  EXPECT_EQ(model.generation, start + 2);
 }
 
 }  // namespace test_viewer_model

@@ -34,7 +34,33 @@ struct RenderContext {
   int threads = 0;             // worker threads, 0: all cores (applied by the frame)
   bool simd = true;            // false: every hot loop runs its scalar twin
   bool show_progress = false;  // progress bar on a terminal for long work
+  // Ask the technique for its debug layers (TechniqueResult::debug_layers); off, a technique
+  // spends nothing on them.
+  bool debug_layers = false;
 };
+
+// A picture of one shared stage's work for one light, at the frame's size, as the papers'
+// figures draw it. A technique publishes the layers of the stages it runs, when
+// RenderContext::debug_layers asks; a technique without such a stage publishes none.
+struct DebugLayer {
+  std::string name;         // one of the kDebugLayer* names below, or a technique's own
+  std::string description;  // what a pixel's value counts
+  Image<float> values;      // per pixel, >= 0; 0 where the stage did nothing
+};
+// The silhouette edges seen from the light centre, drawn as lines (silhouettes stage).
+inline constexpr const char* kSilhouetteEdgesLayer = "silhouette_edges";
+// Per pixel, the wedge faces that reached it after tile culling: the pixels tested against a
+// wedge (penumbra wedges, 2004 paper, section 4).
+inline constexpr const char* kWedgeFootprintsLayer = "wedge_footprints";
+// Per pixel, the (polygon, culling tile) pairs culled at its tile (z-min / z-max culling,
+// 2004 paper, section 4).
+inline constexpr const char* kCulledTilesLayer = "culled_tiles";
+
+// The layer called `name` in `layers`, added with zero values at width x height if missing.
+Image<float>& debugLayer(std::vector<DebugLayer>& layers, const std::string& name,
+                         const std::string& description, int width, int height);
+// The layer called `name`, or null.
+const DebugLayer* findDebugLayer(const std::vector<DebugLayer>& layers, const std::string& name);
 
 // A textured light's visibility per colour channel (R, G, B), each in [0, 1]: the
 // texture-weighted fraction of the light the point sees (scene/light.h, LightTexture).
@@ -50,6 +76,8 @@ struct TechniqueResult {
   // channel.
   ChannelVisibility channels{};
   bool perChannel() const { return !channels[0].empty(); }
+  // Filled only when RenderContext::debug_layers is set.
+  std::vector<DebugLayer> debug_layers;
 };
 
 // Fills result.channels and sets result.visibility to their radiance-weighted mean (above).

@@ -32,6 +32,10 @@ struct OptionSpec {
   std::vector<std::string> choices;  // Choice
   int64_t min = 0, max = 0;          // Integer
   double number_min = 0, number_max = 0;  // Number
+  // A cheaper value for an interactive preview while the view moves (fewer samples or rays),
+  // as set() takes it; empty: the option keeps its value. A preview takes it only where it is
+  // cheaper than the value set (for an Integer, smaller).
+  std::string preview;
   // Sets the field from a command-line value: throws penumbra::Error saying what is wrong.
   std::function<void(std::any& options, const std::string& value)> set;
   std::function<std::string(const std::any& options)> get;  // the value, as set() takes it
@@ -160,6 +164,12 @@ class OptionTableBuilder {
         if (std::any_cast<const Options&>(a).*field == value) return text;
       return std::string("unknown");
     };
+    return *this;
+  }
+
+  // The last option added takes `value` in interactive previews (OptionSpec::preview).
+  OptionTableBuilder& preview(std::string value) {
+    table_.specs_.back().preview = std::move(value);
     return *this;
   }
 

@@ -516,6 +516,9 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   const CoverageTableData* table = nullptr;
   TechniqueResult result;
   Stats& stats = result.stats;
+  // Pass 1's stencil stage draws the silhouettes from the centre (the edges pass 2 takes) and
+  // its culled tiles.
+  if (context.debug_layers) stencil_options.debug_layers = &result.debug_layers;
   if (options_.table != CoverageTable::Analytic) {
     PassTimer timer(stats, "table");
     table = &tables_.get(light, options_.table_size);

@@ -29,8 +29,14 @@ class TiledVolumes final : public PreparedTechnique {
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override {
     TechniqueResult result;
-    const ShadowVolumeSet volumes =
-        buildShadowVolumes(scene_, light.center, view, eye, options_.mode, result.stats);
+    Image<float>* silhouettes =
+        context.debug_layers
+            ? &debugLayer(result.debug_layers, kSilhouetteEdgesLayer,
+                          "silhouette edges seen from the light centre, per pixel", view.width,
+                          view.height)
+            : nullptr;
+    const ShadowVolumeSet volumes = buildShadowVolumes(scene_, light.center, view, eye,
+                                                       options_.mode, result.stats, silhouettes);
     // The stencil resolved tile by tile inside the volume pass (tiledVolumeVisibility): there
     // is no separate "resolve" pass.
     PassTimer timer(result.stats, "volumes");

@@ -6,6 +6,7 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "shadows/stages/caster_volumes/caster_volume.h"
+#include "shadows/stages/silhouettes/silhouette_layer.h"
 
 namespace penumbra {
 namespace {
@@ -103,7 +104,8 @@ void indexVanishedPieces(const ClipTriangles& polygons, std::vector<VanishedPiec
 }
 
 ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const View& view,
-                                   const EyeBuffers& eye, VolumeMode mode, Stats& stats) {
+                                   const EyeBuffers& eye, VolumeMode mode, Stats& stats,
+                                   Image<float>* silhouette_layer) {
   PassTimer timer(stats, "silhouette");
   ShadowVolumeSet set;
   // Every mesh's polygons in one list, set up in one parallel pass (as the per-pixel stencil
@@ -132,6 +134,8 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
   for (size_t m = 0; m < meshes; ++m) {
     CasterVolume& volume = casters[m];
     stats.silhouette_edges += volume.silhouette.edges.size();
+    if (silhouette_layer != nullptr)
+      drawSilhouetteEdges(scene.meshes[m], volume.silhouette.edges, view, *silhouette_layer);
     appendHierarchicalVolumePolygons(scene.meshes[m], uint32_t(m), centre, view, volume,
                                      polygons, segment_ends);
     set.zfail[m] = volume.zfail;

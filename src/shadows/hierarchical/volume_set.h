@@ -59,8 +59,10 @@ void indexVanishedPieces(const ClipTriangles& polygons, std::vector<VanishedPiec
                          ShadowVolumeSet& set);
 
 // Builds the volumes of every scene mesh for a point light at `centre`; fills the pass
-// "silhouette" and the counters silhouette_edges and triangles of `stats`.
+// "silhouette" and the counters silhouette_edges and triangles of `stats`. With
+// `silhouette_layer`, draws the silhouette edges into it (kSilhouetteEdgesLayer).
 ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const View& view,
-                                   const EyeBuffers& eye, VolumeMode mode, Stats& stats);
+                                   const EyeBuffers& eye, VolumeMode mode, Stats& stats,
+                                   Image<float>* silhouette_layer = nullptr);
 
 }  // namespace penumbra

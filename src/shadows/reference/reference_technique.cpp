@@ -266,7 +266,9 @@ TechniqueInfo referenceTechnique() {
   info.traits.covered_mae_bound = 0.01;
   info.traits.penumbra_mae_bound = 0.03;
   OptionTableBuilder<ReferenceOptions> table;
+  // Previews while the view moves: 16 rays, a sixteenth of the default's work.
   table.integer("rays", "rays per pixel over the light", &ReferenceOptions::rays, 1, kMaxRays)
+      .preview("16")
       .flag("hard", "one ray to the light centre, whatever its radius", &ReferenceOptions::hard);
   info.options = seedOption(table, "the ray directions", &ReferenceOptions::seed)
                      .choice("sample-set",

@@ -8,6 +8,7 @@
 
 #include "core/image.h"
 #include "core/stats.h"
+#include "shadows/technique.h"
 
 namespace penumbra {
 
@@ -37,6 +38,8 @@ struct WedgeLi {
   LiBuffer li;
   int full = kLiFull;  // LI of a fully visible light
   Stats stats;
+  // Asked for by RenderContext::debug_layers (shadows/technique.h), on the main pass only.
+  std::vector<DebugLayer> debug_layers;
 };
 
 }  // namespace penumbra

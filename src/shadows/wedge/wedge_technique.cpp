@@ -34,6 +34,7 @@
 #include "shadows/shared_options.h"
 #include "shadows/stages/silhouettes/edge_on_sheet.h"
 #include "shadows/stages/silhouettes/facing_away.h"
+#include "shadows/stages/silhouettes/silhouette_layer.h"
 #include "shadows/wedge/li_buffer.h"
 #include "shadows/wedge/wedge2002_kernel.h"
 #include "shadows/wedge/wedge_culling.h"
@@ -48,6 +49,20 @@ struct WedgeTileWork {
   CullTally tally;
   uint64_t accepted = 0;  // culling tiles whose umbra part went to the coarse level
 };
+
+// The debug layers a pass draws into (RenderContext::debug_layers); null: none. Each bin
+// tile's worker writes its own pixels only.
+struct WedgePassLayers {
+  Image<float>* culled = nullptr;      // kCulledTilesLayer
+  Image<float>* footprints = nullptr;  // kWedgeFootprintsLayer
+};
+
+// The pixels of a wedge face's rect that the penumbra kernel tests, counted in the footprint
+// layer.
+void markFootprint(const WedgePassLayers& layers, const TileEdges& rect) {
+  if (layers.footprints == nullptr) return;
+  forEachCoveredPixel(rect, [&](int x, int y) { layers.footprints->at(x, y) += 1.0f; });
+}
 
 std::vector<WedgeCullPlanes> cullPlanes(const LightWedges& light_wedges, int width, int height) {
   std::vector<WedgeCullPlanes> planes(light_wedges.screen.size());
@@ -94,7 +109,8 @@ int32_t umbraValue(const WedgeRole& role, const SetupTriangle& t, int full) {
 // The stencil is read as 8 bits wrapping around, as the papers' hardware stencil.
 void umbraThroughStencil(const LightWedges& light_wedges, const std::vector<SetupTriangle>& setup,
                          const WedgeOptions& options, const RenderContext& context,
-                         const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
+                         const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats,
+                         const WedgePassLayers& layers) {
   // The umbra volume's triangles with their stencil weights as payload (rasterizer.h); the
   // light wedges' setup already carries the z-fail flag.
   std::vector<SetupTriangle> umbra;
@@ -110,6 +126,7 @@ void umbraThroughStencil(const LightWedges& light_wedges, const std::vector<Setu
   so.tile_culling = options.cull != CullMode::None;
   so.cull_level = options.umbra_tile_level > 0 ? options.umbra_tile_level : options.tile_level;
   so.two_level = options.two_level_stencil && options.cull == CullMode::Full;
+  so.culled_layer = layers.culled;
   rasterizeStencil(umbra, eye.depth, stencil, stats, so);
   parallelFor(size_t(li.height()), [&](size_t y) {
     for (int x = 0; x < li.width(); ++x)
@@ -128,9 +145,10 @@ void umbraThroughStencil(const LightWedges& light_wedges, const std::vector<Setu
 template <class Keep, class Fn>
 void forEachWedgeTriangle(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                           const EyeBuffers& eye, LiBuffer& li, Stats& stats, int coarse_level,
-                          Keep&& keep, Fn&& fn) {
+                          Image<float>* culled_layer, Keep&& keep, Fn&& fn) {
   const int width = li.width(), height = li.height();
   std::vector<WedgeTileWork> work(binTileCount(width, height));
+  for (WedgeTileWork& w : work) w.tally.culled_layer = culled_layer;
   struct Copies {
     Copies(const Image<float>& depth_image, const LiBuffer& li_image, const TileBox& box)
         : depth(depth_image, box), li(li_image, box) {}
@@ -170,10 +188,12 @@ void forEachWedgeTriangle(const LightWedges& light_wedges, std::vector<SetupTria
 
 void penumbraPass(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                   const WedgeOptions& options, const RenderContext& context,
-                  const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
+                  const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats,
+                  const WedgePassLayers& layers) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(light_wedges, li.width(), li.height());
   forEachWedgeTriangle(
-      light_wedges, std::move(setup), eye, li, stats, options.tile_level, penumbraFace,
+      light_wedges, std::move(setup), eye, li, stats, options.tile_level, layers.culled,
+      penumbraFace,
       [&](const SetupTriangle& t, TileEdges& e, auto& target, TileOffsets&, WedgeTileWork& tw) {
         const WedgeRole& role = light_wedges.roles[size_t(t.payload)];
         WedgeKernelWork k;
@@ -187,6 +207,7 @@ void penumbraPass(const LightWedges& light_wedges, std::vector<SetupTriangle> se
             },
             [&](const TileEdges& rect, int) {
               wedgeKernel(rect, k, target(), tw.penumbra, context.simd);
+              markFootprint(layers, rect);
             },
             tw.tally);
       });
@@ -194,11 +215,11 @@ void penumbraPass(const LightWedges& light_wedges, std::vector<SetupTriangle> se
 
 void singlePass(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                 const WedgeOptions& options, const RenderContext& context, const EyeBuffers& eye,
-                int full, LiBuffer& li, Stats& stats) {
+                int full, LiBuffer& li, Stats& stats, const WedgePassLayers& layers) {
   const std::vector<WedgeCullPlanes> planes = cullPlanes(light_wedges, li.width(), li.height());
   const bool two_level = options.two_level_stencil && options.cull == CullMode::Full;
   forEachWedgeTriangle(
-      light_wedges, std::move(setup), eye, li, stats, options.tile_level,
+      light_wedges, std::move(setup), eye, li, stats, options.tile_level, layers.culled,
       [](const WedgeRole& role, const SetupTriangle& t) {
         return role.umbra_weight != 0 || penumbraFace(role, t);
       },
@@ -237,7 +258,10 @@ void singlePass(const LightWedges& light_wedges, std::vector<SetupTriangle> setu
                 k.umbra_value = umbraValue(role, t, full);
                 k.rule = role.zfail ? DepthRule::NotCloser : DepthRule::Closer;
               }
-              if (parts & kPenumbra) k.wedge = wedge;
+              if (parts & kPenumbra) {
+                k.wedge = wedge;
+                markFootprint(layers, rect);
+              }
               if (k.umbra_value == 0 && k.wedge == nullptr) return;
               // One depth read per pixel for both parts: count it under the penumbra when
               // that part runs, else under the umbra.
@@ -250,13 +274,14 @@ void singlePass(const LightWedges& light_wedges, std::vector<SetupTriangle> setu
 
 void original2002(const LightWedges& light_wedges, std::vector<SetupTriangle> setup,
                   const WedgeOptions& options, const RenderContext& context,
-                  const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats) {
+                  const EyeBuffers& eye, int full, LiBuffer& li, Stats& stats,
+                  const WedgePassLayers& layers) {
   // Entries (front-facing wedge faces) and umbra quads; back-facing wedge faces add nothing.
   const auto entry = [](const WedgeRole& role, const SetupTriangle& t) {
     return role.wedge != kNoWedge && t.facing * role.face_sign > 0;
   };
   forEachWedgeTriangle(
-      light_wedges, std::move(setup), eye, li, stats, options.tile_level,
+      light_wedges, std::move(setup), eye, li, stats, options.tile_level, layers.culled,
       [&](const WedgeRole& role, const SetupTriangle& t) {
         return entry(role, t) || role.umbra_weight != 0;
       },
@@ -279,7 +304,30 @@ void original2002(const LightWedges& light_wedges, std::vector<SetupTriangle> se
         }
         wedge2002Kernel(e, light_wedges.screen[size_t(role.wedge)], role.face, float(full),
                         target(), tw.penumbra);
+        markFootprint(layers, e);
       });
+}
+
+// The main pass's debug layers: the silhouette edges the wedges are built on (each wedge's
+// edge a-b), drawn now; the culled tiles and the footprints, for the passes to fill.
+WedgePassLayers addWedgeLayers(const LightWedges& light_wedges, const View& view,
+                               std::vector<DebugLayer>& layers, bool wanted) {
+  if (!wanted) return {};
+  Image<float>& edges = debugLayer(layers, kSilhouetteEdgesLayer,
+                                   "silhouette edges seen from the light centre, per pixel",
+                                   view.width, view.height);
+  for (const Wedge& wedge : light_wedges.wedges) {
+    drawWorldSegment(view, vec3(wedge.a), vec3(wedge.b), edges);
+  }
+  debugLayer(layers, kCulledTilesLayer,
+             "(umbra quad or wedge face, culling tile) pairs culled, per pixel", view.width,
+             view.height);
+  debugLayer(layers, kWedgeFootprintsLayer,
+             "wedge faces whose penumbra test ran at the pixel after tile culling", view.width,
+             view.height);
+  // Pointers taken once every layer is in: adding one moves the others.
+  return {&debugLayer(layers, kCulledTilesLayer, "", view.width, view.height),
+          &debugLayer(layers, kWedgeFootprintsLayer, "", view.width, view.height)};
 }
 
 }  // namespace
@@ -317,6 +365,9 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
     stats.wedges += light_wedges.wedges.size();
   }
   if (edge_on_facing != 0 && light_wedges.silhouette_edges == 0) return result;
+  const WedgePassLayers layers = addWedgeLayers(light_wedges, view, result.debug_layers,
+                                                context.debug_layers && edge_on_facing == 0 &&
+                                                    other_facing_meshes == nullptr);
   {
     PassTimer timer(stats, "setup");
     setup = setupTriangles(light_wedges.triangles, view.width, view.height);
@@ -328,20 +379,22 @@ WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, con
     case WedgeAlgorithm::ThreePass: {
       {
         PassTimer timer(stats, "umbra");
-        umbraThroughStencil(light_wedges, setup, options, context, eye, full, li, stats);
+        umbraThroughStencil(light_wedges, setup, options, context, eye, full, li, stats, layers);
       }
       PassTimer timer(stats, "penumbra");
-      penumbraPass(light_wedges, std::move(setup), options, context, eye, full, li, stats);
+      penumbraPass(light_wedges, std::move(setup), options, context, eye, full, li, stats,
+                   layers);
       break;
     }
     case WedgeAlgorithm::SinglePass: {
       PassTimer timer(stats, "single-pass");
-      singlePass(light_wedges, std::move(setup), options, context, eye, full, li, stats);
+      singlePass(light_wedges, std::move(setup), options, context, eye, full, li, stats, layers);
       break;
     }
     case WedgeAlgorithm::Original2002: {
       PassTimer timer(stats, "wedge-2002");
-      original2002(light_wedges, std::move(setup), options, context, eye, full, li, stats);
+      original2002(light_wedges, std::move(setup), options, context, eye, full, li, stats,
+                   layers);
       break;
     }
   }
@@ -361,6 +414,7 @@ class PenumbraWedges final : public PreparedTechnique {
     WedgeLi wedges = renderWedgeLi(algorithm_, options_, scene_, light, view, eye, context);
     TechniqueResult result;
     result.stats = std::move(wedges.stats);
+    result.debug_layers = std::move(wedges.debug_layers);
     const bool hard = !(light.radius > 0.0f);
     // Casters edge-on to the light centre with the facing their meshes do not cast, each
     // facing in a buffer of its own, clamped on its own (edge_on_sheet.h says why); usually

@@ -8,6 +8,7 @@
 #include "raster/rasterizer.h"
 #include "shadows/stages/caster_volumes/caster_volume.h"
 #include "shadows/stages/silhouettes/facing_away.h"
+#include "shadows/stages/silhouettes/silhouette_layer.h"
 #include "shadows/stages/stencil/stencil_resolve.h"
 
 namespace penumbra {
@@ -90,6 +91,18 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
   const std::vector<uint32_t> edge_offsets =
       quads != nullptr ? sceneEdgeOffsets(scene) : std::vector<uint32_t>();
   if (quads != nullptr) quads->zfail.assign(scene.meshes.size(), 0);
+  Image<float>* silhouette_layer = nullptr;
+  Image<float>* culled_layer = nullptr;
+  if (options.debug_layers != nullptr) {
+    std::vector<DebugLayer>& layers = *options.debug_layers;
+    debugLayer(layers, kSilhouetteEdgesLayer,
+               "silhouette edges seen from the light centre, per pixel", view.width, view.height);
+    debugLayer(layers, kCulledTilesLayer, "(volume polygon, culling tile) pairs culled, per pixel",
+               view.width, view.height);
+    // Pointers taken once both are in: adding a layer moves the others.
+    silhouette_layer = &debugLayer(layers, kSilhouetteEdgesLayer, "", view.width, view.height);
+    culled_layer = &debugLayer(layers, kCulledTilesLayer, "", view.width, view.height);
+  }
   {
     PassTimer timer(stats, "silhouette");
     const std::vector<Silhouette>* known = options.known_silhouettes;
@@ -106,6 +119,8 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
               : casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
       if (found != nullptr) (*found)[m] = volume.silhouette;
       stats.silhouette_edges += volume.silhouette.edges.size();
+      if (silhouette_layer != nullptr)
+        drawSilhouetteEdges(scene.meshes[m], volume.silhouette.edges, view, *silhouette_layer);
       if (quads != nullptr) quads->zfail[m] = volume.zfail ? 1 : 0;
       appendVolumePolygons(scene.meshes[m], scene.adjacency[m], scene.triangle_offsets[m],
                            centre, view, options.skip_own_quads, volume, polygons,
@@ -120,6 +135,7 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
     stencil_options.simd = options.simd;
     stencil_options.two_level = options.two_level_stencil;
     if (options.skip_own_quads) stencil_options.primitive = &eye.primitive;
+    stencil_options.culled_layer = culled_layer;
     std::vector<uint32_t> sources;
     std::vector<SetupTriangle> setup = setupTriangles(polygons, view.width, view.height,
                                                       quads != nullptr ? &sources : nullptr);

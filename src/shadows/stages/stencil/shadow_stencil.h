@@ -52,6 +52,9 @@ struct ShadowStencilOptions {
   // When set (and known_silhouettes is not), receives the silhouettes found, one per mesh (empty
   // for a mesh that casts nothing).
   std::vector<Silhouette>* found_silhouettes = nullptr;
+  // When set, the debug layers of the silhouettes (kSilhouetteEdgesLayer) and of the tile
+  // culling (kCulledTilesLayer) are added to it (shadows/technique.h).
+  std::vector<DebugLayer>* debug_layers = nullptr;
 };
 
 // Fills the passes "silhouette" and "volumes" of `stats` and its counters.
