@@ -48,7 +48,7 @@ const DebugLayer& layerOf(const FrameResult& frame, const char* name) {
 // Not asked, a technique publishes nothing; asked, its visibility stays bit for bit the same
 // (drawing the layers must not touch the buffers the frame is made of).
 TEST(DebugLayers, OnlyWhenAskedAndTheFrameUnchanged) {
-  for (const char* technique : {"volume", "wedge-3pass", "wedge-1pass"}) {
+  for (const char* technique : {"volume", "wedge-3pass", "wedge-1pass", "exact"}) {
     const FrameResult plain = render(technique, false);
     const FrameResult layered = render(technique, true);
     EXPECT_TRUE(plain.lights.at(0).debug_layers.empty()) << technique;
@@ -82,6 +82,27 @@ TEST(DebugLayers, WedgeFootprintsAndCulledTilesMatchTheCounters) {
   EXPECT_EQ(atTileOrigins(layerOf(frame, kCulledTilesLayer).values, 16),
             double(frame.total.tiles_culled));
   EXPECT_GT(sum(layerOf(frame, kSilhouetteEdgesLayer).values), 0.0);
+}
+
+// exact's footprints are its binned potential edges: a pixel in penumbra (visibility strictly
+// between 0 and 1) has some edge's projection over part of the light, so that edge must be
+// binned at its tile; a pixel in penumbra with no binned edge would mean the layer (or the
+// binning) missed a tile. The stencil's layers come with them.
+TEST(DebugLayers, ExactFootprintsHoldEveryPenumbraPixel) {
+  const FrameResult frame = render("exact", true);
+  const Image<float>& footprints = layerOf(frame, kWedgeFootprintsLayer).values;
+  const Image<float>& visibility = frame.lights.at(0).visibility;
+  int penumbra = 0, outside = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      if (!(visibility.at(x, y) > 0.0f && visibility.at(x, y) < 1.0f)) continue;
+      ++penumbra;
+      if (!(footprints.at(x, y) > 0.0f)) ++outside;
+    }
+  EXPECT_GT(penumbra, 0);
+  EXPECT_EQ(outside, 0) << "penumbra pixels outside every binned edge's tile";
+  EXPECT_GT(sum(layerOf(frame, kSilhouetteEdgesLayer).values), 0.0);
+  EXPECT_NE(findDebugLayer(frame.lights.at(0).debug_layers, kCulledTilesLayer), nullptr);
 }
 
 TEST(DebugLayers, LayerLookupAndSizeCheck) {

@@ -173,7 +173,7 @@ class ExactSoftShadows final : public PreparedTechnique {
   void stencilAndEdges(const Light& light, const View& view, const EyeBuffers& eye,
                        const RenderContext& context, StencilQuads& quads,
                        Image<int32_t>& stencil, std::shared_ptr<const PotentialEdges>& edges,
-                       EdgeBins& bins, Stats& stats) const;
+                       EdgeBins& bins, TechniqueResult& result) const;
   void shadeTiles(const LightPass& pass, Stats& stats) const;
   void shadeTile(const LightPass& pass, size_t index, ExactScratch& scratch,
                  ExactTileWork& work) const;
@@ -472,7 +472,8 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
                                        const RenderContext& context, StencilQuads& quads,
                                        Image<int32_t>& stencil,
                                        std::shared_ptr<const PotentialEdges>& edges,
-                                       EdgeBins& bins, Stats& stats) const {
+                                       EdgeBins& bins, TechniqueResult& result) const {
+  Stats& stats = result.stats;
   ShadowStencilOptions stencil_options;
   stencil_options.simd = context.simd;
   // Two-sided casters: the stencil counts every triangle between the point and the centre.
@@ -485,6 +486,7 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
   std::vector<Silhouette> found;
   stencil_options.known_silhouettes = known.get();
   stencil_options.found_silhouettes = &found;
+  if (context.debug_layers) stencil_options.debug_layers = &result.debug_layers;
   Stats edge_stats;
   const size_t passes_before = stats.time_ms.size();
   const auto start = std::chrono::steady_clock::now();
@@ -514,6 +516,11 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
   for (auto& [name, ms] : edge_stats.time_ms) name += kConcurrentPass;
   stats.add(edge_stats);
   stats.time_ms.emplace_back(kConcurrentWait, std::max(0.0, wall - stencil_ms));
+  // After the stencil: adding a layer moves the ones it draws into.
+  if (context.debug_layers)
+    addBinnedEdgeCounts(bins, debugLayer(result.debug_layers, kWedgeFootprintsLayer,
+                                         "potential silhouette edges binned at the pixel's tile",
+                                         view.width, view.height));
 }
 
 // Whether the visible triangle's mesh was drawn z-pass (its quads replayed, QuadReplay).
@@ -796,7 +803,11 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   if (light.radius == 0.0f) {
     ShadowStencilOptions stencil_options;
     stencil_options.simd = context.simd;
-    return hardShadowVolumes(scene_, light, view, eye, stencil_options);
+    std::vector<DebugLayer> layers;
+    if (context.debug_layers) stencil_options.debug_layers = &layers;
+    TechniqueResult result = hardShadowVolumes(scene_, light, view, eye, stencil_options);
+    result.debug_layers = std::move(layers);
+    return result;
   }
   TechniqueResult result;
   Stats& stats = result.stats;
@@ -804,7 +815,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   Image<int32_t> stencil;
   std::shared_ptr<const PotentialEdges> edges;
   EdgeBins bins;
-  stencilAndEdges(light, view, eye, context, quads, stencil, edges, bins, stats);
+  stencilAndEdges(light, view, eye, context, quads, stencil, edges, bins, result);
 
   Image<float> soft(width, height, 1.0f);
   // Disk and rectangle lights: the fixed points of their area; a textured one's visibility per

@@ -343,6 +343,16 @@ class RegionBuilder {
 
 }  // namespace
 
+void addBinnedEdgeCounts(const EdgeBins& bins, Image<float>& layer) {
+  const size_t tiles = size_t(bins.columns) * size_t(bins.rows);
+  for (size_t index = 0; index < tiles; ++index) {
+    const EdgeBinTile tile = edgeBinTile(bins, index, layer.width(), layer.height());
+    const float count = float(tile.end - tile.begin);
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x) layer.at(x, y) += count;
+  }
+}
+
 TileDepthParts tileDepthParts(const DepthBuffer& depth, int level) {
   const int tile = 1 << level;
   const int width = depth.width(), height = depth.height();

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/image.h"
 #include "core/view.h"
 #include "raster/depth_buffer.h"
 #include "scene/light.h"
@@ -51,6 +52,11 @@ inline EdgeBinTile edgeBinTile(const EdgeBins& bins, size_t index, int width, in
                      bins.edges.data() + bins.begin[index + 1], x0, std::min(width, x0 + tile),
                      y0, std::min(height, y0 + tile)};
 }
+// Adds to every pixel of `layer` (the view's size) the count of potential edges binned at its
+// tile: where the edges' regions of influence reach after the tile test, the wedge footprints
+// of the exact technique (its kWedgeFootprintsLayer debug layer).
+void addBinnedEdgeCounts(const EdgeBins& bins, Image<float>& layer);
+
 // The depth parts of the tiles of 2^level pixels (EdgeTileParts) for the tile test.
 TileDepthParts tileDepthParts(const DepthBuffer& depth, int level);
 
