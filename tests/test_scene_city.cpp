@@ -60,6 +60,27 @@ TEST(SceneCity, SizesReachTenAndAHundredMillionTriangles) {
   EXPECT_TRUE(largest.meshes.size() == 1);
 }
 
+// The interior at its smallest size, as the golden digests render it: closed furniture and
+// walls under a lamp inside the hall, instanced, with a path that moves the lamp.
+TEST(SceneCity, SmallestInteriorIsRenderableAndInstanced) {
+  const Scene scene = builtinScene("interior:1");
+  EXPECT_EQ(scene.prototypes.size(), 4u);   // bookshelf, table, chair, column
+  EXPECT_EQ(scene.instances.size(), 12u);   // per bay: 6 shelves, a table, 4 chairs, a column
+  for (size_t m = 1; m < scene.meshes.size(); ++m) {
+    EXPECT_TRUE(scene.meshes[m].closed) << scene.meshes[m].name;
+  }
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_GT(scene.lights[0].radius, 0.0f);
+  // The lamp is inside the hall: under the ceiling, within the walls.
+  const Bounds3 hall = scene.bounds();
+  EXPECT_LT(scene.lights[0].center.y, hall.max.y);
+  EXPECT_GT(scene.lights[0].center.x, hall.min.x);
+  EXPECT_LT(scene.lights[0].center.x, hall.max.x);
+  EXPECT_FALSE(scene.path.lights.empty());
+  const Scene larger = makeInteriorScene(kDefaultInteriorBays);
+  EXPECT_EQ(larger.instances.size(), 12u * kDefaultInteriorBays * kDefaultInteriorBays);
+}
+
 // A size that is not a whole number of blocks in range is an error naming the scene and the
 // range, not an "unknown scene" nor a city of another size.
 TEST(SceneCity, BadSizesAreErrors) {
@@ -71,6 +92,9 @@ TEST(SceneCity, BadSizesAreErrors) {
     EXPECT_TRUE(contains(message, "1..64")) << message;
   }
   EXPECT_FALSE(isBuiltinScene("cityscape"));
+  EXPECT_TRUE(contains(errorMessage([] { (void)builtinScene("interior:0"); }),
+                       "built-in scene 'interior:0': the size after 'interior:' must be a whole "
+                       "number of bays per side in 1..64"));
 }
 
 }  // namespace test_scene_city

@@ -69,7 +69,7 @@ int runScenes(const ScenesArgs& args) {
   }
   // Not built here: the default city flattens to millions of triangles (seconds, gigabytes).
   for (const std::string& name : largeBuiltinSceneNames()) {
-    std::cout << fmt::format("  {:<12} instanced, {}:N for N x N blocks (docs/scene-format.md)\n",
+    std::cout << fmt::format("  {:<12} instanced, {}:N for the size N (docs/scene-format.md)\n",
                              name + "[:N]", name);
   }
 

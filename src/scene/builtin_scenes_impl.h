@@ -19,4 +19,10 @@ constexpr int kTenMillionCityBlocks = 20;
 constexpr int kMaxCityBlocks = 64;
 Scene makeCityScene(int blocks);
 
+// "interior:N": a hall of N x N bays (builtin_interior_scene.cpp); "interior" is
+// kDefaultInteriorBays.
+constexpr int kDefaultInteriorBays = 4;
+constexpr int kMaxInteriorBays = 64;
+Scene makeInteriorScene(int bays);
+
 }  // namespace penumbra
