@@ -16,7 +16,7 @@
 set -euo pipefail
 
 if [[ $# -lt 2 ]]; then
-  sed -n '5,17p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '5,15p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 fi
 : "${SLURM_ARRAY_TASK_ID:?is not set: submit this script with sbatch --array=0-(frames-1), see its first lines}"
