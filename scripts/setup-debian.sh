@@ -14,6 +14,7 @@ packages=(
   libegl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
   clang-14 libclang-rt-14-dev
   libsdl2-dev libimgui-dev xvfb xauth
+  parallel  # GNU parallel: scripts/render-path-parallel.sh and its test
 )
 
 missing=()

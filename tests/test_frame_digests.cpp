@@ -435,6 +435,11 @@ void PrintTo(const SceneCase& scene_case, std::ostream* os) { *os << scene_case.
 std::vector<SceneCase> sceneCases() {
   std::vector<SceneCase> cases;
   for (const std::string& name : builtinSceneNames()) cases.push_back({name, name, ""});
+  // The large built-in scenes at their smallest size (the default city is millions of
+  // triangles; CI renders every technique on one block).
+  for (const std::string& name : largeBuiltinSceneNames()) {
+    cases.push_back({name + ":1", name + "_1", ""});
+  }
   // scenes/ and tests/data/scenes/ (models the repository can neither ship nor fetch).
   const std::filesystem::path root(PENUMBRA_SOURCE_DIR);
   std::vector<std::filesystem::path> files;

@@ -19,6 +19,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_report.h"
 #include "shadows/technique.h"
+#include "path_frames.h"
 #include "technique_flags.h"
 
 namespace penumbra::cli {
@@ -55,6 +56,9 @@ struct RenderArgs {
   std::string stats_json;
   bool quiet = false;
   std::string up = "y";
+  bool path = false;         // every frame of the scene's camera and light path
+  int frame = -1;            // one frame of it
+  bool list_frames = false;  // print the path's frame numbers (for GNU parallel, Slurm arrays)
 };
 
 // One line per mesh read from a file, before the frame; warnings go to stderr even with
@@ -92,6 +96,70 @@ std::string defaultOutput(const std::string& scene_name) {
   return "out/" + (name.empty() ? std::string("scene") : name) + ".png";
 }
 
+// Renders the scene's current view and writes the outputs; `frame` >= 0 numbers every output
+// file as frame `frame` of the scene's path (path_frames.h).
+int renderView(const RenderArgs& args, const FrameOptions& options, const Scene& scene, int frame) {
+  const auto named = [&](const std::string& path) {
+    return frame < 0 || path.empty() ? path : frameOutputPath(path, frame, scene.path.frames);
+  };
+  const std::string output = named(args.output.empty() ? defaultOutput(scene.name) : args.output);
+  const std::string visibility_exr = named(args.visibility_exr);
+  const std::string visibility_png = named(args.visibility_png);
+  const std::string depth_exr = named(args.depth_exr);
+  const std::string stats_json = named(args.stats_json);
+  std::vector<NamedOutput> outputs = {{"-o", output}};
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    if (!visibility_exr.empty()) {
+      outputs.push_back({"--visibility", indexedOutputPath(visibility_exr, i)});
+    }
+    if (!visibility_png.empty()) {
+      outputs.push_back({"--visibility-png", indexedOutputPath(visibility_png, i)});
+    }
+  }
+  if (!depth_exr.empty()) outputs.push_back({"--depth", depth_exr});
+  if (!stats_json.empty()) outputs.push_back({"--stats", stats_json});
+  checkDistinctOutputs(outputs);
+
+  FrameResult result;
+  std::string timings;
+  if (args.frames > 0) {
+    // The technique is prepared once; the outputs are the last frame's.
+    const FrameRenderer renderer(scene, options);
+    timings = frameTimingsLine(timeFrames(renderer, args.frames, args.warmup, result));
+  } else {
+    result = renderFrame(scene, options);
+  }
+
+  std::vector<std::string> written;
+  writePng(output, result.color);
+  written.push_back(output);
+  for (size_t i = 0; i < result.lights.size(); ++i) {
+    if (!visibility_exr.empty()) {
+      written.push_back(indexedOutputPath(visibility_exr, i));
+      writeExr(written.back(), result.lights[i].visibility);
+    }
+    if (!visibility_png.empty()) {
+      written.push_back(indexedOutputPath(visibility_png, i));
+      writePngGray(written.back(), result.lights[i].visibility);
+    }
+  }
+  if (!depth_exr.empty()) {
+    writeExr(depth_exr, result.eye.depth.depth);
+    written.push_back(depth_exr);
+  }
+  if (!stats_json.empty()) {
+    writeStatsJson(stats_json, scene, options, result);
+    written.push_back(stats_json);
+  }
+
+  if (!args.quiet) {
+    std::cout << frameSummaryLine(scene, options, result) << "\n";
+    if (!timings.empty()) std::cout << timings << "\n";
+    std::cout << fmt::format("wrote {}\n", fmt::join(written, ", "));
+  }
+  return 0;
+}
+
 int runRender(const RenderArgs& args) {
   FrameOptions options;
   options.technique = TechniqueConfig(args.technique);
@@ -125,7 +193,21 @@ int runRender(const RenderArgs& args) {
     throw Error("--rays has no effect with --hard (one ray per pixel to the light centre)");
   }
 
-  const Scene scene = loadScene(args.scene, parseUpAxis(args.up));
+  PENUMBRA_CHECK(!(args.path && args.frame >= 0),
+                 "--path renders every frame of the path and --frame K one of them: give one");
+  PENUMBRA_CHECK(!(args.list_frames && (args.path || args.frame >= 0)),
+                 "--list-frames renders nothing: give it without --path and --frame");
+  Scene scene = loadScene(args.scene, parseUpAxis(args.up));
+  const std::vector<int> frames = framesToRender(scene, args.path || args.list_frames, args.frame);
+  if (args.list_frames) {
+    // One frame number a line: `penumbra render S --list-frames | parallel penumbra render S
+    // --frame {}` (scripts/render-path-parallel.sh), or the size of a Slurm array.
+    for (const int k : frames) std::cout << k << "\n";
+    return 0;
+  }
+  PENUMBRA_CHECK(args.frames == 0 || frames.size() <= 1,
+                 "--frames times one view; give --frame K instead of --path to time a frame of "
+                 "the path");
   printMeshReports(scene, args.quiet);
   if (args.command->count("--rays") > 0) {
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -135,56 +217,10 @@ int runRender(const RenderArgs& args) {
                                i);
     }
   }
-  const std::string output = args.output.empty() ? defaultOutput(scene.name) : args.output;
-  std::vector<NamedOutput> outputs = {{"-o", output}};
-  for (size_t i = 0; i < scene.lights.size(); ++i) {
-    if (!args.visibility_exr.empty()) {
-      outputs.push_back({"--visibility", indexedOutputPath(args.visibility_exr, i)});
-    }
-    if (!args.visibility_png.empty()) {
-      outputs.push_back({"--visibility-png", indexedOutputPath(args.visibility_png, i)});
-    }
-  }
-  if (!args.depth_exr.empty()) outputs.push_back({"--depth", args.depth_exr});
-  if (!args.stats_json.empty()) outputs.push_back({"--stats", args.stats_json});
-  checkDistinctOutputs(outputs);
-
-  FrameResult result;
-  std::string timings;
-  if (args.frames > 0) {
-    // The technique is prepared once; the outputs are the last frame's.
-    const FrameRenderer renderer(scene, options);
-    timings = frameTimingsLine(timeFrames(renderer, args.frames, args.warmup, result));
-  } else {
-    result = renderFrame(scene, options);
-  }
-
-  std::vector<std::string> written;
-  writePng(output, result.color);
-  written.push_back(output);
-  for (size_t i = 0; i < result.lights.size(); ++i) {
-    if (!args.visibility_exr.empty()) {
-      written.push_back(indexedOutputPath(args.visibility_exr, i));
-      writeExr(written.back(), result.lights[i].visibility);
-    }
-    if (!args.visibility_png.empty()) {
-      written.push_back(indexedOutputPath(args.visibility_png, i));
-      writePngGray(written.back(), result.lights[i].visibility);
-    }
-  }
-  if (!args.depth_exr.empty()) {
-    writeExr(args.depth_exr, result.eye.depth.depth);
-    written.push_back(args.depth_exr);
-  }
-  if (!args.stats_json.empty()) {
-    writeStatsJson(args.stats_json, scene, options, result);
-    written.push_back(args.stats_json);
-  }
-
-  if (!args.quiet) {
-    std::cout << frameSummaryLine(scene, options, result) << "\n";
-    if (!timings.empty()) std::cout << timings << "\n";
-    std::cout << fmt::format("wrote {}\n", fmt::join(written, ", "));
+  if (frames.empty()) return renderView(args, options, scene, -1);
+  for (const int k : frames) {
+    applyPathFrame(scene, k);
+    renderView(args, options, scene, k);
   }
   return 0;
 }
@@ -245,6 +281,17 @@ Subcommand addRenderCommand(CLI::App& app) {
   cmd->add_option("--up", args->up, "Up axis of a mesh file given as the scene (x, y or z)")
       ->check(CLI::IsMember({"x", "y", "z"}))
       ->capture_default_str();
+  cmd->add_flag("--path", args->path,
+                 "Render every frame of the scene's camera and light path, each output numbered "
+                 "(out/city.png: out/city.0000.png, ...)")
+      ->group("Paths");
+  cmd->add_option("--frame", args->frame, "Render frame K of the scene's path (numbered as --path)")
+      ->check(wholeNumberIn(0, 999999))
+      ->group("Paths");
+  cmd->add_flag("--list-frames", args->list_frames,
+                "Print the path's frame numbers, one a line, and render nothing (a job list for "
+                "GNU parallel or a Slurm array)")
+      ->group("Paths");
   cmd->add_flag("-q,--quiet", args->quiet,
                 "Print nothing but warnings, draw no progress bar");
   return {cmd, [args] { return runRender(*args); }};

@@ -67,6 +67,11 @@ int runScenes(const ScenesArgs& args) {
       std::cout << fmt::format("  {:<12} (cannot build: {})\n", name, e.what());
     }
   }
+  // Not built here: the default city flattens to millions of triangles (seconds, gigabytes).
+  for (const std::string& name : largeBuiltinSceneNames()) {
+    std::cout << fmt::format("  {:<12} instanced, {}:N for the size N (docs/scene-format.md)\n",
+                             name + "[:N]", name);
+  }
 
   const fs::path root(PENUMBRA_SOURCE_DIR);
   std::vector<std::string> files;

@@ -42,11 +42,13 @@
 #include <penumbra/scene/builtin_scenes.h>
 #include <penumbra/scene/camera.h>
 #include <penumbra/scene/edges.h>
+#include <penumbra/scene/instances.h>
 #include <penumbra/scene/light.h>
 #include <penumbra/scene/load_mesh.h>
 #include <penumbra/scene/material.h>
 #include <penumbra/scene/mesh_arrays.h>
 #include <penumbra/scene/mesh.h>
+#include <penumbra/scene/path.h>
 #include <penumbra/scene/scene.h>
 #include <penumbra/scene/scene_file.h>
 #include <penumbra/scene/up_axis.h>

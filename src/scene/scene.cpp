@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "scene/flatten_instances.h"
 #include "scene/normals.h"
 
 namespace penumbra {
@@ -94,10 +95,16 @@ void Scene::finalize() {
                  "{}: ambient and background colours must be finite and >= 0", label);
   try {
     (void)camera.makeView(settings.width, settings.height);
+    checkScenePath(*this);
   } catch (const Error& e) {
     throw Error(fmt::format("{}: {}", label, e.what()));
   }
 
+  try {
+    flattenInstances(*this);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", label, e.what()));
+  }
   triangle_offsets.assign(1, 0);
   size_t total = 0;
   for (size_t m = 0; m < meshes.size(); ++m) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 #include "core/error.h"
@@ -18,6 +19,19 @@ Mesh& addMesh(Scene& scene, Mesh mesh, uint32_t material) {
   mesh.material = material;
   scene.meshes.push_back(std::move(mesh));
   return scene.meshes.back();
+}
+
+uint32_t addPrototype(Scene& scene, Mesh mesh) {
+  scene.prototypes.push_back(std::make_shared<const Mesh>(std::move(mesh)));
+  return uint32_t(scene.prototypes.size() - 1);
+}
+
+void addInstance(Scene& scene, uint32_t prototype, const mat4& transform, uint32_t material) {
+  MeshInstance instance;
+  instance.prototype = prototype;
+  instance.transform = transform;
+  instance.material = material;
+  scene.instances.push_back(std::move(instance));
 }
 
 void addLight(Scene& scene, vec3 center, float radius, vec3 color, float intensity) {

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/image_io.h"
 #include "scene/builtin_scenes.h"
+#include "scene/flatten_instances.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_file_impl.h"
 
@@ -250,9 +251,10 @@ constexpr int kMaxBaseDepth = 32;
 // saves what it shows this way (its camera and lights over the scene it opened).
 Scene parseSceneOverBase(const JsonReader& reader, const Json& root, const Json& base_value,
                          const std::string& base_dir) {
-  for (const char* key : {"meshes", "materials"}) {
+  for (const char* key : {"meshes", "materials", "prototypes", "instances"}) {
     if (root.contains(key)) {
-      reader.fail(key, "a scene with a \"base\" takes its meshes and materials from the base");
+      reader.fail(key, "a scene with a \"base\" takes its meshes, materials, prototypes and "
+                       "instances from the base");
     }
   }
   const std::string base = reader.string(base_value, "base");
@@ -282,6 +284,7 @@ Scene parseSceneOverBase(const JsonReader& reader, const Json& root, const Json&
     scene.lights.clear();
     readLights(reader, *lights, scene, base_dir);
   }
+  if (const Json* path = JsonReader::find(root, "path")) readScenePath(reader, *path, scene);
   try {
     scene.finalize();
   } catch (const Error& e) {
@@ -348,7 +351,7 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
   const Json root = reader.parse(text);
   if (!root.is_object()) reader.fail("", "the scene must be a JSON object");
   reader.expectObject(root, "", {"name", "description", "base", "camera", "lights", "materials",
-                                 "meshes", "settings"});
+                                 "meshes", "prototypes", "instances", "settings", "path"});
   if (const Json* base = JsonReader::find(root, "base")) {
     return parseSceneOverBase(reader, root, *base, base_dir);
   }
@@ -362,10 +365,23 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
   }
   if (scene.materials.empty()) scene.materials.push_back(Material{});
 
-  const Json& meshes = reader.required(root, "", "meshes");
+  // "meshes" may be left out when "instances" place the geometry.
+  const Json* instances = JsonReader::find(root, "instances");
+  static const Json kNoMeshes = Json::array();
+  const Json& meshes = instances && !root.contains("meshes") ? kNoMeshes
+                                                             : reader.required(root, "", "meshes");
   reader.expectArray(meshes, "meshes");
   for (size_t i = 0; i < meshes.size(); ++i) {
     readMeshEntry(reader, meshes[i], JsonReader::element("meshes", i), base_dir, arrays, scene);
+  }
+  const Json* prototypes = JsonReader::find(root, "prototypes");
+  if (prototypes && !instances) reader.fail("prototypes", "are given but no \"instances\" place them");
+  readPrototypesAndInstances(reader, prototypes, instances, base_dir, arrays, scene);
+  // Now, so that the lights' size check and the default camera see the instances.
+  try {
+    flattenInstances(scene);
+  } catch (const Error& e) {
+    reader.fail("instances", e.what());
   }
   readLights(reader, reader.required(root, "", "lights"), scene, base_dir);
   if (const Json* settings = JsonReader::find(root, "settings")) {
@@ -382,6 +398,7 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
       reader.fail("camera", fmt::format("not given, and {}", e.what()));
     }
   }
+  if (const Json* path = JsonReader::find(root, "path")) readScenePath(reader, *path, scene);
   try {
     scene.finalize();
   } catch (const Error& e) {

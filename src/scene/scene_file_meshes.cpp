@@ -264,9 +264,24 @@ std::string resolveMeshPath(const std::string& file, const std::string& base_dir
   return p.lexically_normal().string();
 }
 
+mat4 readTransformValue(const JsonReader& reader, const Json& value, const std::string& path) {
+  return readTransform(reader, value, path);
+}
+
+uint32_t readMaterialValue(const JsonReader& reader, const Json& value, const std::string& path,
+                           const Scene& scene) {
+  return readMaterialRef(reader, value, path, scene);
+}
+
 void readMeshEntry(const JsonReader& reader, const Json& entry, const std::string& path,
                    const std::string& base_dir, const std::vector<MeshArrays>& arrays,
                    Scene& scene) {
+  scene.meshes.push_back(readMeshValue(reader, entry, path, base_dir, arrays, scene));
+}
+
+Mesh readMeshValue(const JsonReader& reader, const Json& entry, const std::string& path,
+                   const std::string& base_dir, const std::vector<MeshArrays>& arrays,
+                   const Scene& scene) {
   if (!entry.is_object()) reader.fail(path, "expected an object");
   const bool has_file = entry.contains("file");
   const bool has_generator = entry.contains("generator");
@@ -309,7 +324,7 @@ void readMeshEntry(const JsonReader& reader, const Json& entry, const std::strin
   if (const Json* material = JsonReader::find(entry, "material")) {
     mesh.material = readMaterialRef(reader, *material, JsonReader::child(path, "material"), scene);
   }
-  scene.meshes.push_back(std::move(mesh));
+  return mesh;
 }
 
 }  // namespace penumbra

@@ -41,6 +41,33 @@ WriterJson lightJson(const Light& light) {
   return entry;
 }
 
+// Written only when the scene has one; floats through double as above.
+WriterJson pathJson(const ScenePath& path) {
+  WriterJson doc = {{"frames", path.frames}};
+  if (!path.camera.empty()) {
+    WriterJson keys = WriterJson::array();
+    for (const CameraKey& key : path.camera) {
+      keys.push_back({{"time", double(key.time)},
+                      {"position", vectorJson(key.position)},
+                      {"target", vectorJson(key.target)},
+                      {"fov", double(key.fov_y)}});
+    }
+    doc["camera"] = std::move(keys);
+  }
+  if (!path.lights.empty()) {
+    WriterJson lights = WriterJson::array();
+    for (const LightPath& light : path.lights) {
+      WriterJson keys = WriterJson::array();
+      for (const LightKey& key : light.keys) {
+        keys.push_back({{"time", double(key.time)}, {"center", vectorJson(key.center)}});
+      }
+      lights.push_back({{"light", light.light}, {"keys", std::move(keys)}});
+    }
+    doc["lights"] = std::move(lights);
+  }
+  return doc;
+}
+
 }  // namespace
 
 std::string sceneOverBaseJson(const Scene& scene, const std::string& base) {
@@ -64,6 +91,7 @@ std::string sceneOverBaseJson(const Scene& scene, const std::string& base) {
     text += "    " + lightJson(scene.lights[i]).dump() + (i + 1 < scene.lights.size() ? ",\n" : "\n");
   }
   text += "  ],\n";
+  if (!scene.path.empty()) text += "  \"path\": " + pathJson(scene.path).dump() + ",\n";
   text += "  \"settings\": " + settings.dump() + "\n";
   return text + "}\n";
 }

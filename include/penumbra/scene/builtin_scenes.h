@@ -8,10 +8,18 @@
 
 namespace penumbra {
 
-// "spheres", "columns", "fractal", "year2002", "multilight".
+// "spheres", "columns", "fractal", "year2002", "multilight": the scenes every technique's tests
+// render.
 std::vector<std::string> builtinSceneNames();
+// "city", "interior": built-in scenes too large for those tests at their default size. Each
+// also takes a size, "city:N" (N x N blocks, 1..64; "city" is city:8, 2 million triangles;
+// city:20 holds over 10 million, city:64 over 100 million), "interior:N" (a hall of N x N bays,
+// 1..64; "interior" is interior:4); the tests render "city:1" and "interior:1".
+std::vector<std::string> largeBuiltinSceneNames();
+// True for the names of both lists and for every "city:..." and "interior:..." (a bad size is
+// builtinScene's error).
 bool isBuiltinScene(const std::string& name);
-Scene builtinScene(const std::string& name);  // throws penumbra::Error for an unknown name
+Scene builtinScene(const std::string& name);  // throws penumbra::Error for an unknown name or size
 
 // A scene around one mesh file: the mesh framed by the camera, standing on a ground plane under
 // a default light ("penumbra render some.obj"); `up` is the file's up axis.

@@ -31,6 +31,14 @@ std::string sceneOverBaseJson(const Scene& scene, const std::string& base);
 // file when it cannot be written.
 void writeSceneOverBase(const std::string& path, const Scene& scene, const std::string& base);
 
+// Writes the whole of `scene` as a scene file at `path`: materials, lights, camera, settings,
+// and its geometry as OBJ files in the folder `<path without .json>-meshes/` beside it (each
+// mesh that is not an instance copy as meshes/<i>.obj, each prototype once as
+// prototypes/<i>.obj) with the instances as "matrix" entries. Loading it gives the same
+// positions, triangles, instance transforms and materials bit for bit (shading normals are
+// recomputed by the loader). Throws penumbra::Error naming the file that cannot be written.
+void writeSceneFile(const std::string& path, const Scene& scene);
+
 // The folder "models:NAME" paths are looked up in, the first of: $PENUMBRA_MODELS when set;
 // ../shared/models beside the source tree when that folder exists (developers); the user's
 // cache, userModelsCache(), which scripts/fetch-models.sh fills.
