@@ -209,6 +209,7 @@ TEST(ShadowMap, DefaultBiasAvoidsAcneAtGrazingAngles) {
     no_bias.options<ShadowMapOptions>().constant_bias = 0.0;
     no_bias.options<ShadowMapOptions>().slope_bias = 0.0;
     no_bias.options<ShadowMapOptions>().normal_offset = 0.0;
+    no_bias.options<ShadowMapOptions>().ring_bias = 0.0;
     EXPECT_GT(shadowedFraction(no_bias), 0.2) << resolution << " texels, no bias";
     EXPECT_EQ(shadowedFraction(shadowMap(resolution, 3)), 0.0) << resolution << " texels";
   }
@@ -219,6 +220,8 @@ TEST(ShadowMap, BiasOptionsParseAsNumbers) {
   TechniqueConfig config("shadow-map");
   config.set("constant-bias", "0.25");
   config.set("slope-bias", "2e0");
+  config.set("ring-bias", "3");
+  EXPECT_EQ(config.options<ShadowMapOptions>().ring_bias, 3.0);
   EXPECT_EQ(config.options<ShadowMapOptions>().constant_bias, 0.25);
   EXPECT_EQ(config.options<ShadowMapOptions>().slope_bias, 2.0);
   EXPECT_EQ(config.get("constant-bias"), "0.25");

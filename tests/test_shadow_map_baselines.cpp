@@ -77,30 +77,43 @@ TEST(ShadowMapBaselines, PcssErrorOnSelfShadowingScenes) {
 
 // Acne: covered pixels the hard oracle lights, whose 8 neighbours it lights too (so no shadow
 // boundary passes within a pixel, where a shadow map may be off by a texel), that the shadow map
-// darkens by more than 0.1. On the terrain at 160 x 107 with the defaults of before (constant
-// and slope-scaled depth bias, no normal offset): 0.65 % of covered pixels; with the normal
-// offset 0.13 %, what is left sits on facets almost edge-on to the light. The bound is 0.25 %.
-// If this failed, the default shadow map would speckle lit ground with its own surface again.
-TEST(ShadowMapBaselines, ShadowMapAcneOnTheTerrain) {
+// darkens by more than 0.1. Leaks: covered pixels the shadow map lights by more than 0.1 above
+// the oracle. On the terrain at 160 x 107:
+//   slope-scaled bias, no normal offset (before "Bias as engines ship it"): acne 0.65 %;
+//   normal offset 1, no ring bias: acne 21 pixels (0.135 %), leaks 1092 pixels (6.82 %);
+//   normal offset 0.8, ring bias 4 (the defaults): acne 8 pixels (0.051 %), leaks 1070 (6.68 %).
+// The plain map (--pcf-kernel 1) has no acne at all here: what is left is the 3 x 3 kernel's
+// off-centre taps reading rough ground that rises towards the light beside the point. A larger
+// ring bias removes more (8: 2 pixels, on a facet 2 degrees from edge-on) but lights real
+// shadows of casters close above their receiver at low map resolutions (ShadowMap.
+// SquareOccluderShadowByHand at 64 texels), so the bound is the 8 measured pixels, and leaks
+// may not exceed the 1092 of before. If this failed, the default shadow map would speckle lit
+// ground with its own surface again, or buy its freedom from acne with light in the shadows.
+TEST(ShadowMapBaselines, ShadowMapAcneAndLeaksOnTheTerrain) {
   const Frame f = testing::makeEyeFrame(terrainScene(), 160, 107);
   const Image<float> truth = oracle(f, true);
   const Image<float> map = visibility(TechniqueConfig("shadow-map"), f);
   const int w = truth.width(), h = truth.height();
-  size_t covered = 0, acne = 0;
-  for (int y = 1; y + 1 < h; ++y) {
-    for (int x = 1; x + 1 < w; ++x) {
+  size_t inner = 0, acne = 0, covered = 0, leaks = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
       if (f.eye.depth.depth.at(x, y) == 0.0f) continue;
       ++covered;
+      leaks += map.at(x, y) > truth.at(x, y) + 0.1f;
+      if (x == 0 || y == 0 || x + 1 == w || y + 1 == h) continue;
+      ++inner;
       bool lit_around = true;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) lit_around = lit_around && truth.at(x + dx, y + dy) == 1.0f;
       if (lit_around && map.at(x, y) < 0.9f) ++acne;
     }
   }
-  const double share = double(acne) / double(covered);
-  std::printf("[ baseline ] shadow-map on the terrain: %zu acne pixels of %zu covered (%.3f %%)\n",
-              acne, covered, 100.0 * share);
-  EXPECT_LE(share, 0.0025);
+  std::printf("[ baseline ] shadow-map on the terrain: %zu acne pixels of %zu covered (%.3f %%), "
+              "%zu leaking pixels of %zu (%.2f %%)\n",
+              acne, inner, 100.0 * double(acne) / double(inner), leaks, covered,
+              100.0 * double(leaks) / double(covered));
+  EXPECT_LE(acne, 8u);
+  EXPECT_LE(leaks, 1092u);
 }
 
 }  // namespace test_shadow_map_baselines

@@ -57,10 +57,15 @@ TEST(ShadowMapKernels, PcfSimdEqualsScalarOnRandomBatchesAndAtTheBorder) {
       // Every eighth receiver sits exactly at a stored occluder: ">=" must hold in both.
       receiver[p] = p % 8 == 0 ? occluderAt(face, int(sx[p]), int(sy[p])) : distance(rng);
     }
+    // Half the points with a ring bias: the taps' receivers must step the same way in both.
+    std::vector<double> ring_bias(n, 0.0);
+    for (size_t p = 0; p < n; p += 2) ring_bias[p] = 0.01 * double(p % 7);
     for (const int kernel : {1, 3, 5, 15}) {
       std::vector<float> simd(n), scalar(n);
-      pcfVisibility(face, sx.data(), sy.data(), receiver.data(), kernel, simd.data(), n, true);
-      pcfVisibilityScalar(face, sx.data(), sy.data(), receiver.data(), kernel, scalar.data(), n);
+      pcfVisibility(face, sx.data(), sy.data(), receiver.data(), ring_bias.data(), kernel,
+                    simd.data(), n, true);
+      pcfVisibilityScalar(face, sx.data(), sy.data(), receiver.data(), ring_bias.data(), kernel,
+                          scalar.data(), n);
       for (size_t p = 0; p < n; ++p)
         ASSERT_EQ(simd[p], scalar[p]) << "kernel " << kernel << " point " << p << " at ("
                                       << sx[p] << ", " << sy[p] << ")";
@@ -79,14 +84,20 @@ TEST(ShadowMapKernels, PcfScalarCountsTheHandCheckedKernel) {
   sy[1] = 1.5;
   sx[2] = 3.9;  // far side: no tap reaches x = 0
   receiver[3] = 1.5;  // in front of the occluder: lit
+  std::vector<double> ring_bias(kLookupBlock, 0.0);
+  ring_bias[4] = 3.0;  // the occluder at (0, 0) is a ring-1 tap: 5 - 3 = 2 is in front of it
   std::vector<float> v(kLookupBlock);
-  pcfVisibilityScalar(face, sx.data(), sy.data(), receiver.data(), 3, v.data(), kLookupBlock);
+  pcfVisibilityScalar(face, sx.data(), sy.data(), receiver.data(), ring_bias.data(), 3, v.data(),
+                      kLookupBlock);
   EXPECT_FLOAT_EQ(v[0], 8.0f / 9.0f);  // taps (0..2) x (0..2): one on the occluder
   EXPECT_FLOAT_EQ(v[1], 7.0f / 9.0f);  // taps at x = -1 and x = 0 of row 0 both read (0, 0)
   EXPECT_FLOAT_EQ(v[2], 1.0f);
   EXPECT_FLOAT_EQ(v[3], 1.0f);
-  pcfVisibility(face, sx.data(), sy.data(), receiver.data(), 3, v.data(), kLookupBlock, true);
+  EXPECT_FLOAT_EQ(v[4], 1.0f);
+  pcfVisibility(face, sx.data(), sy.data(), receiver.data(), ring_bias.data(), 3, v.data(),
+                kLookupBlock, true);
   EXPECT_FLOAT_EQ(v[1], 7.0f / 9.0f);
+  EXPECT_FLOAT_EQ(v[4], 1.0f);
 }
 
 // A wrong SIMD twin (another spiral turn, blocker average, early-out or read count) gives other

@@ -106,15 +106,12 @@ class ShadowMasks final : public PreparedTechnique {
     if (saturation.casters.empty()) return;
     std::lock_guard<std::mutex> lock(warned_mutex_);
     warned_.resize(scene_.meshes.size(), false);
-    for (const uint32_t c : saturation.casters) {
-      if (warned_[c]) continue;
-      warned_[c] = true;
-      fmt::print(stderr,
-                 "warning: {}: the shadow volume of caster {} (\"{}\") needs more halvings than "
-                 "the 8-bit mask holds; {} pixel{} of this frame may differ from the stencil "
-                 "(counter mask_saturated_pixels)\n",
-                 channel_ == MaskChannel::Alpha ? "mask-alpha" : "mask-colour", c,
-                 scene_.meshes[c].name, saturation.pixels, saturation.pixels == 1 ? "" : "s");
+    for (const SaturatedCaster& c : saturation.casters) {
+      if (warned_[c.mesh]) continue;
+      warned_[c.mesh] = true;
+      fmt::print(stderr, "{}",
+                 saturationWarning(channel_ == MaskChannel::Alpha ? "mask-alpha" : "mask-colour",
+                                   scene_, c, saturation.pixels));
     }
   }
 

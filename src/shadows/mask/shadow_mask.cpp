@@ -5,6 +5,8 @@
 #include <memory>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "raster/binning.h"
@@ -112,15 +114,28 @@ void drawTileVolumes(const MaskVolumes& volumes, const uint32_t* first, const ui
       w.saturated_pixels += target.saturated[(y - box.y0) * target.stride + (x - box.x0)];
 }
 
-// The casters named once each, in scene order, whose volumes lost a halving in some tile.
-std::vector<uint32_t> saturatedCasters(const MaskVolumes& volumes,
-                                       const std::vector<MaskTileWork>& work) {
-  std::vector<bool> seen(volumes.caster_of.empty() ? 0 : volumes.caster_of.back() + 1, false);
+// The casters, in scene order, whose volumes lost a halving in some tile, each with its
+// saturated parts (a part's number: how many volumes of the same caster come before it).
+std::vector<SaturatedCaster> saturatedCasters(const MaskVolumes& volumes,
+                                              const std::vector<MaskTileWork>& work) {
+  std::vector<bool> lost(volumes.caster_of.size(), false);
   for (const MaskTileWork& w : work)
-    for (const uint32_t v : w.saturated_volumes) seen[volumes.caster_of[v]] = true;
-  std::vector<uint32_t> out;
-  for (uint32_t c = 0; c < seen.size(); ++c)
-    if (seen[c]) out.push_back(c);
+    for (const uint32_t v : w.saturated_volumes) lost[v] = true;
+  std::vector<SaturatedCaster> out;
+  std::vector<uint32_t> parts_so_far;
+  for (uint32_t v = 0; v < volumes.caster_of.size(); ++v) {
+    const uint32_t c = volumes.caster_of[v];
+    if (c >= parts_so_far.size()) parts_so_far.resize(c + 1, 0);
+    const uint32_t part = parts_so_far[c]++;
+    if (!lost[v]) continue;
+    auto it = std::find_if(out.begin(), out.end(),
+                           [c](const SaturatedCaster& s) { return s.mesh == c; });
+    if (it == out.end()) it = out.insert(out.end(), SaturatedCaster{c, {}, 0});
+    it->parts.push_back(part);
+  }
+  for (SaturatedCaster& s : out) s.part_count = parts_so_far[s.mesh];
+  std::sort(out.begin(), out.end(),
+            [](const SaturatedCaster& a, const SaturatedCaster& b) { return a.mesh < b.mesh; });
   return out;
 }
 
@@ -193,6 +208,24 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
                   [mode](uint32_t v) { return threePassRectangle3(v, mode); });
   }
   return mask;
+}
+
+std::string saturationWarning(const std::string& technique, const Scene& scene,
+                              const SaturatedCaster& caster, uint64_t pixels) {
+  // A scan may saturate dozens of parts: the first kListedParts name them, a count the rest.
+  constexpr size_t kListedParts = 12;
+  std::string parts;
+  for (size_t i = 0; i < caster.parts.size() && i < kListedParts; ++i)
+    parts += (i == 0 ? "" : ", ") + std::to_string(caster.parts[i]);
+  if (caster.parts.size() > kListedParts)
+    parts += fmt::format(" and {} more", caster.parts.size() - kListedParts);
+  return fmt::format(
+      "warning: {}: scene \"{}\": the shadow volume of caster {} (\"{}\"), connected part{} {} "
+      "of its {}, needs more halvings than the 8-bit mask holds; {} pixel{} of this frame may "
+      "differ from the stencil (counter mask_saturated_pixels)\n",
+      technique, scene.name, caster.mesh, scene.meshes[caster.mesh].name,
+      caster.parts.size() == 1 ? "" : "s", parts, caster.part_count, pixels,
+      pixels == 1 ? "" : "s");
 }
 
 }  // namespace penumbra

@@ -3,6 +3,7 @@
 // hard shadow volumes drawn into an 8-bit buffer with double and halve blends, one volume at a
 // time (mask_volumes.h), then normalised by full-window rectangles into a bilevel mask.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/stats.h"
@@ -50,10 +51,23 @@ struct ShadowMaskOptions {
 
 // Where the 8 bits were not enough: the pixels a halving took below 1/255 (their value, and so
 // possibly their lit/shadowed state, is not the stencil's) and the casters whose volumes did it.
+// A caster is split into connected parts, one volume each (mask_volumes.h): `parts` says
+// which of them saturated, numbered 0..part_count-1 in the order maskVolumes builds them.
+struct SaturatedCaster {
+  uint32_t mesh = 0;            // scene mesh index
+  std::vector<uint32_t> parts;  // ascending
+  uint32_t part_count = 0;      // the caster's parts that cast a volume in this frame
+};
 struct MaskSaturation {
   uint64_t pixels = 0;
-  std::vector<uint32_t> casters;  // scene mesh indices, ascending
+  std::vector<SaturatedCaster> casters;  // by scene mesh index, ascending
 };
+
+// The stderr warning for one saturated caster, naming the scene, the caster (index and mesh
+// name) and its saturated parts (the first 12, then how many more), and the frame's count of
+// saturated pixels.
+std::string saturationWarning(const std::string& technique, const Scene& scene,
+                              const SaturatedCaster& caster, uint64_t pixels);
 
 // Adds the passes "silhouette", "mask volumes" and one per normalisation rectangle, and the
 // counters silhouette_edges, triangles, pixels_rasterized, z_reads, stencil_writes (mask

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 
 namespace penumbra {
 
@@ -42,11 +43,15 @@ inline double clampLookupPosition(double s, int size) {
 }
 
 // visibility[p] = the fraction of the kernel x kernel texels nearest (sx[p], sy[p]) (texel
-// centres; x0 = floor(sx - (kernel - 1) / 2)) whose occluder is at or beyond receiver[p].
+// centres; x0 = floor(sx - (kernel - 1) / 2)) whose occluder is at or beyond
+// receiver[p] - ring x ring_bias[p], where ring = max(|i - h|, |j - h|) for the tap (i, j) of
+// the kernel, h = (kernel - 1) / 2: 0 for the centre tap, 1 for the eight around it, and so on.
 // n is a multiple of kLookupBlock; kernel is odd, 1..15.
 void pcfVisibility(const FaceTexels& face, const double* sx, const double* sy,
-                   const double* receiver, int kernel, float* visibility, size_t n, bool simd);
+                   const double* receiver, const double* ring_bias, int kernel,
+                   float* visibility, size_t n, bool simd);
 void pcfVisibilityScalar(const FaceTexels& face, const double* sx, const double* sy,
-                         const double* receiver, int kernel, float* visibility, size_t n);
+                         const double* receiver, const double* ring_bias, int kernel,
+                         float* visibility, size_t n);
 
 }  // namespace penumbra

@@ -20,7 +20,8 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 void PcfVisibilitySimd(const FaceTexels& face, const double* sx, const double* sy,
-                       const double* receiver, int kernel, float* visibility, size_t n) {
+                       const double* receiver, const double* ring_bias, int kernel,
+                       float* visibility, size_t n) {
   // At most kLookupBlock lanes, so that n (a multiple of it) is a whole number of vectors.
   const hn::CappedTag<double, kLookupBlock> dd;
   const hn::Rebind<int32_t, decltype(dd)> di;
@@ -33,12 +34,16 @@ void PcfVisibilitySimd(const FaceTexels& face, const double* sx, const double* s
     const auto x0 = FloorToInt(dd, hn::Sub(hn::LoadU(dd, sx + p), half));
     const auto y0 = FloorToInt(dd, hn::Sub(hn::LoadU(dd, sy + p), half));
     const auto recv = hn::LoadU(dd, receiver + p);
+    const auto step = hn::LoadU(dd, ring_bias + p);
+    const int half_taps = (kernel - 1) / 2;
     auto lit = hn::Zero(dd);  // whole numbers, exact in double
     for (int j = 0; j < kernel; ++j) {
       const auto yj = hn::Add(y0, hn::Set(di, j));
       for (int i = 0; i < kernel; ++i) {
+        const int ring = std::max(std::abs(i - half_taps), std::abs(j - half_taps));
+        const auto tap_receiver = hn::Sub(recv, hn::Mul(hn::Set(dd, double(ring)), step));
         const auto d = OccluderAt(dd, face, hn::Add(x0, hn::Set(di, i)), yj);
-        lit = hn::Add(lit, hn::IfThenElseZero(hn::Ge(d, recv), one));
+        lit = hn::Add(lit, hn::IfThenElseZero(hn::Ge(d, tap_receiver), one));
       }
     }
     hn::Store(lit, dd, lit_lanes);
@@ -56,11 +61,13 @@ namespace penumbra {
 HWY_EXPORT(PcfVisibilitySimd);
 
 void pcfVisibility(const FaceTexels& face, const double* sx, const double* sy,
-                   const double* receiver, int kernel, float* visibility, size_t n, bool simd) {
+                   const double* receiver, const double* ring_bias, int kernel, float* visibility,
+                   size_t n, bool simd) {
   if (useSimd(simd)) {
-    HWY_DYNAMIC_DISPATCH(PcfVisibilitySimd)(face, sx, sy, receiver, kernel, visibility, n);
+    HWY_DYNAMIC_DISPATCH(PcfVisibilitySimd)(face, sx, sy, receiver, ring_bias, kernel,
+                                            visibility, n);
   } else {
-    pcfVisibilityScalar(face, sx, sy, receiver, kernel, visibility, n);
+    pcfVisibilityScalar(face, sx, sy, receiver, ring_bias, kernel, visibility, n);
   }
 }
 
@@ -72,8 +79,9 @@ void pcfVisibility(const FaceTexels& face, const double* sx, const double* sy,
 namespace penumbra {
 
 void pcfVisibility(const FaceTexels& face, const double* sx, const double* sy,
-                   const double* receiver, int kernel, float* visibility, size_t n, bool) {
-  pcfVisibilityScalar(face, sx, sy, receiver, kernel, visibility, n);
+                   const double* receiver, const double* ring_bias, int kernel, float* visibility,
+                   size_t n, bool) {
+  pcfVisibilityScalar(face, sx, sy, receiver, ring_bias, kernel, visibility, n);
 }
 
 }  // namespace penumbra
