@@ -134,9 +134,8 @@ TEST(SceneFileBadValues, NulInAStringIsRefusedWithTheKey) {
 TEST(SceneFileBadValues, ModelsPrefixCannotLeaveTheModelsFolder) {
   ScratchDir dir;
   dir.write("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  const char* previous = std::getenv("PENUMBRA_MODELS");
-  const std::string saved = previous ? previous : "";
-  setenv("PENUMBRA_MODELS", (dir.path() + "/models").c_str(), 1);
+  // Restored after the test: later tests in the same process read the models folder.
+  const test::ScopedEnv models("PENUMBRA_MODELS", dir.path() + "/models");
   for (const char* file : {"models:../x.obj", "models:sub/../../x.obj", "models:/etc/passwd"}) {
     const std::string message = errorMessage([&] {
       parseSceneJson(sceneWithMesh(fmt::format(R"({{"file": "{}"}})", file)), "escape.json", "");
