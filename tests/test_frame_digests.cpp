@@ -443,7 +443,8 @@ std::vector<SceneCase> sceneCases() {
   // scenes/ and tests/data/scenes/ (models the repository can neither ship nor fetch).
   const std::filesystem::path root(PENUMBRA_SOURCE_DIR);
   std::vector<std::filesystem::path> files;
-  for (const std::filesystem::path& folder : {root / "scenes", root / "tests" / "data" / "scenes"}) {
+  for (const std::filesystem::path& folder :
+       {root / "scenes", root / "tests" / "data" / "scenes"}) {
     if (!std::filesystem::is_directory(folder)) continue;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
       if (entry.path().extension() == ".json") files.push_back(entry.path());

@@ -148,7 +148,8 @@ LimitOracle limitOracle(const Frame& f, const Light& light, VolumeMode mode, Mas
   for (size_t i = 0; i < pixels; ++i) {
     uint32_t v = mask[i];
     v = n == MaskNormalisation::ThreePass
-            ? threePassRectangle3(threePassRectangle2(threePassRectangle1(v)), MaskShadowMode::Black)
+            ? threePassRectangle3(threePassRectangle2(threePassRectangle1(v)),
+                                  MaskShadowMode::Black)
             : maxBlendRectangle(v);
     o.simulated_lit[i] = maskLit(v);
   }
@@ -189,8 +190,8 @@ struct Agreement {
 Agreement compareWithVolumes(const Frame& f, VolumeMode mode, const std::string& what) {
   Agreement a;
   for (const Light& light : f.scene.lights) {
-    const TechniqueResult volume =
-        renderShadows(TechniqueConfig("volume", VolumeOptions{mode}), f.scene, light, f.view, f.eye);
+    const TechniqueResult volume = renderShadows(TechniqueConfig("volume", VolumeOptions{mode}),
+                                                 f.scene, light, f.view, f.eye);
     for (const MaskConfig& c : kFullResolutionConfigs) {
       const LimitOracle limit = limitOracle(f, light, mode, c.normalisation);
       const TechniqueResult mask =
@@ -261,9 +262,12 @@ TEST(MaskTechnique, EyeInsideAVolumeAndLightInTheFrustum) {
     Scene scene;
   };
   const Case cases[] = {
-      {"eye in shadow", testing::sphereOverGround(vec3(0.2f, 0.6f, 0.1f), vec3(4, 0, 3), vec3(0, 12, 0))},
-      {"light in frustum", testing::sphereOverGround(vec3(6, 4, 6), vec3(0, 4, 0), vec3(-1, 5, -1))},
-      {"light inside the sphere", testing::sphereOverGround(vec3(4, 3, 4), vec3(0, 1, 0), vec3(0.1f, 2.2f, 0))},
+      {"eye in shadow",
+       testing::sphereOverGround(vec3(0.2f, 0.6f, 0.1f), vec3(4, 0, 3), vec3(0, 12, 0))},
+      {"light in frustum",
+       testing::sphereOverGround(vec3(6, 4, 6), vec3(0, 4, 0), vec3(-1, 5, -1))},
+      {"light inside the sphere",
+       testing::sphereOverGround(vec3(4, 3, 4), vec3(0, 1, 0), vec3(0.1f, 2.2f, 0))},
   };
   for (const Case& c : cases) {
     const Frame f = testing::makeEyeFrame(c.scene, 96, 64);
@@ -307,9 +311,9 @@ TEST(MaskTechnique, FullResolutionMatchesVolumesOnSharedModels) {
 // (scenes/failure-modes/), at 96 x 64 and at the grids a half- and a quarter-resolution mask is
 // drawn on (48 x 32, 24 x 16: section 4.5 draws the mask there with its own depth pass and
 // magnifies it): both masks, both normalisations, give `volume`'s image at every pixel but those
-// they count in mask_saturated_pixels and the ties of a negative count. These are the scans, sculpts, CAD parts and multi-part
-// models on which the paper's drawing order lost thousands of pixels. If this failed, a caster
-// with many folds would lose shadow silently again.
+// they count in mask_saturated_pixels and the ties of a negative count. These are the scans,
+// sculpts, CAD parts and multi-part models on which the paper's drawing order lost thousands of
+// pixels. If this failed, a caster with many folds would lose shadow silently again.
 TEST(MaskTechnique, SceneFilesAndTerrainMatchVolumesAtEveryMaskResolution) {
   const std::filesystem::path dir = std::filesystem::path(PENUMBRA_SOURCE_DIR) / "scenes";
   std::vector<std::filesystem::path> files;
@@ -416,7 +420,8 @@ FrameAgreement frameAgreement(const TechniqueConfig& config, const Scene& scene)
                     f.scene.lights[0], f.view, f.eye);
   const TechniqueResult r = renderShadows(config, f.scene, f.scene.lights[0], f.view, f.eye);
   FrameAgreement a;
-  for (size_t i = 0; i < r.visibility.size(); ++i) a.differing += r.visibility[i] != volume.visibility[i];
+  for (size_t i = 0; i < r.visibility.size(); ++i)
+    a.differing += r.visibility[i] != volume.visibility[i];
   a.saturated = r.stats.counter("mask_saturated_pixels");
   return a;
 }
@@ -445,12 +450,13 @@ TEST(MaskTechnique, EightBitLimitOnKLayersOfVolume) {
       const bool in_a_row = layout != 1, one_caster = layout >= 2, comb = layout == 3;
       const Scene scene =
           comb ? testing::combOverGround(k) : boxesOverGround(k, in_a_row, one_caster);
-      const std::string what = std::to_string(k) +
-                               (comb ? "-tooth comb"
-                                     : (in_a_row ? " in a row" : " stacked") +
-                                           std::string(one_caster ? ", one caster" : ", k casters"));
-      ASSERT_EQ(centreVisibility(TechniqueConfig("volume", VolumeOptions{VolumeMode::ZPass}), scene),
-                0.0f)
+      const std::string what =
+          std::to_string(k) + (comb ? "-tooth comb"
+                                    : (in_a_row ? " in a row" : " stacked") +
+                                          std::string(one_caster ? ", one caster" : ", k casters"));
+      ASSERT_EQ(
+          centreVisibility(TechniqueConfig("volume", VolumeOptions{VolumeMode::ZPass}), scene),
+          0.0f)
           << what;
       const bool max_blend_right = !comb || k <= 8;
       EXPECT_EQ(centreVisibility(maskConfig(three_pass, VolumeMode::ZPass), scene), 0.0f)
@@ -521,10 +527,11 @@ TEST(MaskTechnique, LowResolutionMasksErrorAndPixelsSaved) {
     for (int s = 0; s < 3; ++s) {
       error_full[s] /= double(covered);
       error_oracle[s] /= double(covered);
-      std::printf("[ masks    ] %-10s 1/%d: MAE vs full-resolution mask %.4f, vs oracle %.4f, "
-                  "mask writes %llu (%.2fx fewer)\n",
-                  name.c_str(), 1 << s, error_full[s], error_oracle[s],
-                  (unsigned long long)writes[s], double(writes[0]) / double(std::max<uint64_t>(writes[s], 1)));
+      std::printf(
+          "[ masks    ] %-10s 1/%d: MAE vs full-resolution mask %.4f, vs oracle %.4f, "
+          "mask writes %llu (%.2fx fewer)\n",
+          name.c_str(), 1 << s, error_full[s], error_oracle[s], (unsigned long long)writes[s],
+          double(writes[0]) / double(std::max<uint64_t>(writes[s], 1)));
       EXPECT_LE(error_full[s], kMaxErrorVsFull[s]) << name << " 1/" << (1 << s);
       EXPECT_LE(error_oracle[s], kMaxErrorVsFull[s] + 0.025) << name << " 1/" << (1 << s);
     }

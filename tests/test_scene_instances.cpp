@@ -61,7 +61,8 @@ TEST(SceneInstances, CopiesAreThePrototypeMovedByEachTransform) {
   EXPECT_EQ(scene.meshes[3].material, 2u);  // overridden
   EXPECT_EQ(scene.meshes[3].name, "small tower");
   EXPECT_EQ(scene.meshes[1].name, "tower #0");
-  EXPECT_EQ(scene.triangleCount(), 2 + 2 * tower.triangleCount() + scene.prototypes[1]->triangleCount());
+  EXPECT_EQ(scene.triangleCount(),
+            2 + 2 * tower.triangleCount() + scene.prototypes[1]->triangleCount());
   EXPECT_EQ(scene.adjacency.size(), scene.meshes.size());
 }
 
@@ -92,7 +93,8 @@ TEST(SceneInstances, PrototypesAreSharedAndFinalizeDoesNotDuplicate) {
 }
 
 std::string withInstances(const std::string& instances, const std::string& extra = "") {
-  return std::string(R"({"prototypes": [{"name": "tower", "generator": "box", "min": [0, 0, 0], "max": [1, 1, 1]},
+  return std::string(
+             R"({"prototypes": [{"name": "tower", "generator": "box", "min": [0, 0, 0], "max": [1, 1, 1]},
                                        {"name": "ball", "generator": "sphere"}],)") +
          extra + R"("instances": )" + instances + R"(, "lights": [{"center": [0, 9, 0]}]})";
 }
@@ -103,27 +105,38 @@ TEST(SceneInstances, BadEntriesNameTheFileKeyAndProblem) {
   const auto message = [](const std::string& text) {
     return errorMessage([&] { (void)parse(text); });
   };
-  EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": "towr"}])")),
-                       "city.json: instances[0].prototype: no prototype named 'towr' (prototypes: tower, ball)"));
-  EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": 0}, {"prototype": 2}])")),
-                       "instances[1].prototype: prototype index 2 is out of range (there are 2 prototypes)"));
-  EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": 0, "transform": {}, "matrix": []}])")),
-                       "instances[0]: takes \"transform\" or \"matrix\", not both"));
-  EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": 0, "matrix": [[1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}])")),
-                       "instances[0].matrix[0]: expected 3 rows of 4 numbers"));
-  EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": 0, "matrix": [[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0]]}])")),
-                       "instances[0].matrix: is singular"));
+  EXPECT_TRUE(contains(
+      message(withInstances(R"([{"prototype": "towr"}])")),
+      "city.json: instances[0].prototype: no prototype named 'towr' (prototypes: tower, ball)"));
+  EXPECT_TRUE(contains(
+      message(withInstances(R"([{"prototype": 0}, {"prototype": 2}])")),
+      "instances[1].prototype: prototype index 2 is out of range (there are 2 prototypes)"));
+  EXPECT_TRUE(
+      contains(message(withInstances(R"([{"prototype": 0, "transform": {}, "matrix": []}])")),
+               "instances[0]: takes \"transform\" or \"matrix\", not both"));
+  EXPECT_TRUE(
+      contains(message(withInstances(
+                   R"([{"prototype": 0, "matrix": [[1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}])")),
+               "instances[0].matrix[0]: expected 3 rows of 4 numbers"));
+  EXPECT_TRUE(
+      contains(message(withInstances(
+                   R"([{"prototype": 0, "matrix": [[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0]]}])")),
+               "instances[0].matrix: is singular"));
   EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": 0, "material": "gold"}])")),
                        "instances[0].material: no material named 'gold'"));
   EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": 0, "scale": 2}])")),
                        "instances[0].scale: unknown key"));
-  EXPECT_TRUE(contains(message(withInstances(R"([{"prototype": 0, "transform": {"translate": [3e38, 0, 0], "scale": 3e38}}])")),
-                       "city.json: instances: instance 0 ('tower #0')"));
-  EXPECT_TRUE(contains(message(R"({"instances": [{"prototype": 0}], "lights": [{"center": [0, 9, 0]}]})"),
-                       "instances[0].prototype: names a prototype, but the scene has no \"prototypes\""));
-  EXPECT_TRUE(contains(message(R"({"meshes": [{"generator": "box", "min": [0, 0, 0], "max": [1, 1, 1]}],
+  EXPECT_TRUE(contains(
+      message(withInstances(
+          R"([{"prototype": 0, "transform": {"translate": [3e38, 0, 0], "scale": 3e38}}])")),
+      "city.json: instances: instance 0 ('tower #0')"));
+  EXPECT_TRUE(
+      contains(message(R"({"instances": [{"prototype": 0}], "lights": [{"center": [0, 9, 0]}]})"),
+               "instances[0].prototype: names a prototype, but the scene has no \"prototypes\""));
+  EXPECT_TRUE(
+      contains(message(R"({"meshes": [{"generator": "box", "min": [0, 0, 0], "max": [1, 1, 1]}],
                                    "prototypes": [{"generator": "sphere"}], "lights": [{"center": [0, 9, 0]}]})"),
-                       "prototypes: are given but no \"instances\" place them"));
+               "prototypes: are given but no \"instances\" place them"));
   EXPECT_TRUE(contains(message(R"({"prototypes": [{"generator": "sphere"}, {"generator": "sphere"}],
                                    "instances": [{"prototype": 0}], "lights": [{"center": [0, 9, 0]}]})"),
                        "prototypes[1]: prototype 'sphere' is defined twice"));
@@ -145,7 +158,8 @@ TEST(SceneInstances, WrittenSceneReadsBackBitForBit) {
   ASSERT_EQ(back.instances.size(), scene.instances.size());
   ASSERT_EQ(back.meshes.size(), scene.meshes.size());
   for (size_t i = 0; i < scene.instances.size(); ++i) {
-    EXPECT_EQ(std::memcmp(&back.instances[i].transform, &scene.instances[i].transform, sizeof(mat4)), 0)
+    EXPECT_EQ(
+        std::memcmp(&back.instances[i].transform, &scene.instances[i].transform, sizeof(mat4)), 0)
         << "instance " << i;
     EXPECT_EQ(back.instances[i].material, scene.instances[i].material);
     EXPECT_EQ(back.instances[i].prototype, scene.instances[i].prototype);

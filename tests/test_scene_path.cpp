@@ -46,7 +46,8 @@ TEST(ScenePath, FramesInterpolateBetweenKeysAndHoldOutside) {
   EXPECT_EQ(scene.camera.fov_y, 60.0f);
   EXPECT_EQ(scene.lights[1].center, vec3(3, 5, 0));
   applyPathFrame(scene, 2);  // a third of the way from key 1 to key 2; the light's last key
-  EXPECT_NEAR(glm::length(scene.camera.position - vec3(4 + 2.0f / 3, 3, 4 - 4.0f / 3)), 0.0f, 1e-5f);
+  EXPECT_NEAR(glm::length(scene.camera.position - vec3(4 + 2.0f / 3, 3, 4 - 4.0f / 3)), 0.0f,
+              1e-5f);
   EXPECT_NEAR(scene.camera.fov_y, 60.0f - 20.0f / 3, 1e-4f);  // the last key has the file's 40
   EXPECT_EQ(scene.lights[1].center, vec3(-3, 5, 0));
   applyPathFrame(scene, 0);
@@ -56,7 +57,8 @@ TEST(ScenePath, FramesInterpolateBetweenKeysAndHoldOutside) {
 }
 
 std::string withPath(const std::string& path) {
-  return std::string(R"({"meshes": [{"generator": "sphere"}], "lights": [{"center": [0, 5, 0]}], "path": )") +
+  return std::string(
+             R"({"meshes": [{"generator": "sphere"}], "lights": [{"center": [0, 5, 0]}], "path": )") +
          path + "}";
 }
 
@@ -65,19 +67,28 @@ TEST(ScenePath, BadPathsNameTheFileAndKey) {
   const auto message = [](const std::string& path) {
     return errorMessage([&] { (void)parse(withPath(path)); });
   };
-  EXPECT_TRUE(contains(message(R"({"camera": [{"time": 0, "position": [0, 0, 5], "target": [0, 0, 0]}]})"),
-                       "walk.json: path.frames: missing"));
-  EXPECT_TRUE(contains(message(R"({"frames": 0, "camera": []})"), "path.frames: must be in 1..1000000 (got 0)"));
-  EXPECT_TRUE(contains(message(R"({"frames": 3})"), "walk.json: path: moves neither the camera nor a light"));
-  EXPECT_TRUE(contains(message(R"({"frames": 3, "camera": [{"time": 1, "position": [0, 0, 5], "target": [0, 0, 0]},
+  EXPECT_TRUE(
+      contains(message(R"({"camera": [{"time": 0, "position": [0, 0, 5], "target": [0, 0, 0]}]})"),
+               "walk.json: path.frames: missing"));
+  EXPECT_TRUE(contains(message(R"({"frames": 0, "camera": []})"),
+                       "path.frames: must be in 1..1000000 (got 0)"));
+  EXPECT_TRUE(contains(message(R"({"frames": 3})"),
+                       "walk.json: path: moves neither the camera nor a light"));
+  EXPECT_TRUE(contains(
+      message(R"({"frames": 3, "camera": [{"time": 1, "position": [0, 0, 5], "target": [0, 0, 0]},
                                                            {"time": 1, "position": [0, 1, 5], "target": [0, 0, 0]}]})"),
-                       "path.camera[1].time: 1 must be greater than the previous key's time (1)"));
-  EXPECT_TRUE(contains(message(R"({"frames": 3, "camera": [{"time": 0, "position": [0, 0, 5], "target": [0, 0, 5]}]})"),
-                       "path.camera[0]: position and target must differ"));
-  EXPECT_TRUE(contains(message(R"({"frames": 3, "lights": [{"light": 1, "keys": [{"time": 0, "center": [0, 5, 0]}]}]})"),
-                       "path.lights[0].light: light 1 is out of range (the scene has 1 lights)"));
-  EXPECT_TRUE(contains(message(R"({"frames": 3, "lights": [{"keys": [{"time": 0, "centre": [0, 5, 0]}]}]})"),
-                       "path.lights[0].keys[0].centre: unknown key"));
+      "path.camera[1].time: 1 must be greater than the previous key's time (1)"));
+  EXPECT_TRUE(contains(
+      message(
+          R"({"frames": 3, "camera": [{"time": 0, "position": [0, 0, 5], "target": [0, 0, 5]}]})"),
+      "path.camera[0]: position and target must differ"));
+  EXPECT_TRUE(contains(
+      message(
+          R"({"frames": 3, "lights": [{"light": 1, "keys": [{"time": 0, "center": [0, 5, 0]}]}]})"),
+      "path.lights[0].light: light 1 is out of range (the scene has 1 lights)"));
+  EXPECT_TRUE(contains(
+      message(R"({"frames": 3, "lights": [{"keys": [{"time": 0, "centre": [0, 5, 0]}]}]})"),
+      "path.lights[0].keys[0].centre: unknown key"));
   // A file over a base that replaces the lights with fewer than the base's path moves.
   const std::string over = errorMessage([] {
     (void)parseSceneJson(R"({"base": "city:1", "lights": [{"center": [0, 50, 0]}],
@@ -103,12 +114,15 @@ TEST(ScenePath, WrittenPathReadsBackBitForBit) {
     ASSERT_EQ(back.path.frames, scene.path.frames);
     ASSERT_EQ(back.path.camera.size(), scene.path.camera.size());
     for (size_t k = 0; k < scene.path.camera.size(); ++k) {
-      EXPECT_EQ(std::memcmp(&back.path.camera[k], &scene.path.camera[k], sizeof(CameraKey)), 0) << k;
+      EXPECT_EQ(std::memcmp(&back.path.camera[k], &scene.path.camera[k], sizeof(CameraKey)), 0)
+          << k;
     }
     ASSERT_EQ(back.path.lights.size(), 1u);
     EXPECT_EQ(back.path.lights[0].light, 1u);
     ASSERT_EQ(back.path.lights[0].keys.size(), 2u);
-    EXPECT_EQ(std::memcmp(&back.path.lights[0].keys[1], &scene.path.lights[0].keys[1], sizeof(LightKey)), 0);
+    EXPECT_EQ(
+        std::memcmp(&back.path.lights[0].keys[1], &scene.path.lights[0].keys[1], sizeof(LightKey)),
+        0);
   }
 }
 
@@ -148,7 +162,8 @@ TEST_F(PathCli, PathFrameAndListFramesAgree) {
 
   const auto out_of_range = run("render walk.json --frame 5");
   EXPECT_NE(out_of_range.exit_code, 0);
-  EXPECT_TRUE(contains(out_of_range.err, "--frame 5 is out of range: the path of scene 'walk' has frames 0..4"))
+  EXPECT_TRUE(contains(out_of_range.err,
+                       "--frame 5 is out of range: the path of scene 'walk' has frames 0..4"))
       << out_of_range.err;
   const auto no_path = run("render spheres --path");
   EXPECT_NE(no_path.exit_code, 0);
@@ -168,17 +183,20 @@ TEST_F(PathCli, ParallelAndSlurmScriptsRenderThePathsFrames) {
       << "GNU parallel is not installed (scripts/setup-debian.sh installs it)";
   const std::string scripts = std::string(PENUMBRA_SOURCE_DIR) + "/scripts/";
   const std::string parallel = fmt::format(
-      "cd '{}' && PENUMBRA='{}' '{}render-path-parallel.sh' walk.json par/walk.png 2 -- --technique volume "
+      "cd '{}' && PENUMBRA='{}' '{}render-path-parallel.sh' walk.json par/walk.png 2 -- "
+      "--technique volume "
       ">par.log 2>&1",
       dir_.string(), cli_, scripts);
   ASSERT_EQ(std::system(parallel.c_str()), 0) << penumbra::testing::slurp(path("par.log"));
   for (int k = 0; k < 5; ++k) {
     SCOPED_TRACE(k);
     const std::string name = fmt::format("walk.{:04d}.png", k);
-    EXPECT_EQ(penumbra::testing::slurp(path("par/" + name)), penumbra::testing::slurp(path("seq/" + name)));
+    EXPECT_EQ(penumbra::testing::slurp(path("par/" + name)),
+              penumbra::testing::slurp(path("seq/" + name)));
   }
   const std::string slurm = fmt::format(
-      "cd '{}' && SLURM_ARRAY_TASK_ID=3 SLURM_CPUS_PER_TASK=1 PENUMBRA='{}' '{}render-path-slurm.sh' "
+      "cd '{}' && SLURM_ARRAY_TASK_ID=3 SLURM_CPUS_PER_TASK=1 PENUMBRA='{}' "
+      "'{}render-path-slurm.sh' "
       "walk.json slurm/walk.png -- --technique volume >slurm.log 2>&1",
       dir_.string(), cli_, scripts);
   ASSERT_EQ(std::system(slurm.c_str()), 0) << penumbra::testing::slurp(path("slurm.log"));

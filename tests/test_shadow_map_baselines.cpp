@@ -104,7 +104,8 @@ TEST(ShadowMapBaselines, ShadowMapAcneAndLeaksOnTheTerrain) {
       ++inner;
       bool lit_around = true;
       for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) lit_around = lit_around && truth.at(x + dx, y + dy) == 1.0f;
+        for (int dx = -1; dx <= 1; ++dx)
+          lit_around = lit_around && truth.at(x + dx, y + dy) == 1.0f;
       if (lit_around && map.at(x, y) < 0.9f) ++acne;
     }
   }

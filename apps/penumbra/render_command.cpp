@@ -244,7 +244,8 @@ Subcommand addRenderCommand(CLI::App& app) {
     auto flag = std::make_unique<TechniqueFlag>();
     flag->name = use.spec->name;
     flag->kind = use.spec->kind;
-    const std::string help = fmt::format("{} [{}]", use.spec->help, fmt::join(use.techniques, ", "));
+    const std::string help =
+        fmt::format("{} [{}]", use.spec->help, fmt::join(use.techniques, ", "));
     if (use.spec->kind == OptionKind::Flag) {
       flag->option = cmd->add_flag("--" + use.spec->name, flag->given, help);
     } else {

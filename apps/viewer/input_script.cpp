@@ -17,13 +17,25 @@ struct Arity {
 };
 
 const std::map<std::string, Arity>& commandArity() {
-  static const std::map<std::string, Arity> arity = {
-      {"wait", {1, 1}},          {"drag", {5, 8}},          {"wheel", {3, 3}},
-      {"key", {1, 1}},           {"technique", {1, 1}},     {"option", {2, 2}},
-      {"light", {1, 1}},         {"light-radius", {1, 1}},  {"light-intensity", {1, 1}},
-      {"overlay", {1, 1}},       {"compare", {1, 1}},       {"preview-scale", {1, 1}},
-      {"preview-samples", {1, 1}}, {"threads", {1, 1}},       {"simd", {1, 1}},          {"save-scene", {1, 1}},
-      {"screenshot", {1, 1}},    {"window-screenshot", {1, 1}}, {"wait-oracle", {1, 1}}};
+  static const std::map<std::string, Arity> arity = {{"wait", {1, 1}},
+                                                     {"drag", {5, 8}},
+                                                     {"wheel", {3, 3}},
+                                                     {"key", {1, 1}},
+                                                     {"technique", {1, 1}},
+                                                     {"option", {2, 2}},
+                                                     {"light", {1, 1}},
+                                                     {"light-radius", {1, 1}},
+                                                     {"light-intensity", {1, 1}},
+                                                     {"overlay", {1, 1}},
+                                                     {"compare", {1, 1}},
+                                                     {"preview-scale", {1, 1}},
+                                                     {"preview-samples", {1, 1}},
+                                                     {"threads", {1, 1}},
+                                                     {"simd", {1, 1}},
+                                                     {"save-scene", {1, 1}},
+                                                     {"screenshot", {1, 1}},
+                                                     {"window-screenshot", {1, 1}},
+                                                     {"wait-oracle", {1, 1}}};
   return arity;
 }
 
@@ -46,11 +58,11 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
     }
     const Arity arity = known->second;
     if (command.args.size() < arity.min || command.args.size() > arity.max) {
-      throw Error(fmt::format("{}:{}: '{}' takes {} arguments (got {})", origin, number,
-                              command.name,
-                              arity.min == arity.max ? fmt::format("{}", arity.min)
-                                                     : fmt::format("{} to {}", arity.min, arity.max),
-                              command.args.size()));
+      throw Error(
+          fmt::format("{}:{}: '{}' takes {} arguments (got {})", origin, number, command.name,
+                      arity.min == arity.max ? fmt::format("{}", arity.min)
+                                             : fmt::format("{} to {}", arity.min, arity.max),
+                      command.args.size()));
     }
     commands.push_back(std::move(command));
   }

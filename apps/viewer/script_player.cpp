@@ -54,15 +54,18 @@ Uint8 buttonNamed(const ScriptCommand& command) {
   if (name == "left") return SDL_BUTTON_LEFT;
   if (name == "middle") return SDL_BUTTON_MIDDLE;
   if (name == "right") return SDL_BUTTON_RIGHT;
-  throw Error(fmt::format("line {}: unknown button '{}' (left, middle, right)", command.line, name));
+  throw Error(
+      fmt::format("line {}: unknown button '{}' (left, middle, right)", command.line, name));
 }
 
 }  // namespace
 
 void ViewerApp::pushDrag(const ScriptCommand& command) {
   const Uint8 button = buttonNamed(command);
-  const int x0 = parseArgInt(command, 1, -100000, 100000), y0 = parseArgInt(command, 2, -100000, 100000);
-  const int x1 = parseArgInt(command, 3, -100000, 100000), y1 = parseArgInt(command, 4, -100000, 100000);
+  const int x0 = parseArgInt(command, 1, -100000, 100000),
+            y0 = parseArgInt(command, 2, -100000, 100000);
+  const int x1 = parseArgInt(command, 3, -100000, 100000),
+            y1 = parseArgInt(command, 4, -100000, 100000);
   int steps = 8;
   bool ctrl = false, shift = false;
   for (size_t i = 5; i < command.args.size(); ++i) {
@@ -103,7 +106,8 @@ void ViewerApp::runScript() {
   }
   if (script_wait_passes_ > 0) {
     const std::optional<OracleImage> oracle = oracle_->latest();
-    if (!oracle || oracle->generation != model_.generation || oracle->passes < script_wait_passes_) {
+    if (!oracle || oracle->generation != model_.generation ||
+        oracle->passes < script_wait_passes_) {
       return;
     }
     script_wait_passes_ = 0;

@@ -133,9 +133,10 @@ void ViewerApp::runBench() {
                    "viewer loop: {} frames {}x{} {}: median frame interval {:.3f} ms ({:.2f} "
                    "frames/s); the window drawn {} times, median {:.3f} ms; CPU: window thread "
                    "{:.1f} ms, rendering {:.1f} ms\n",
-                   intervals.size(), model_.width, model_.height, techniqueConfig(model_).describe(),
-                   interval, interval > 0 ? 1000.0 / interval : 0.0, draws.size(), median(draws),
-                   window_cpu, process_cpu - window_cpu)
+                   intervals.size(), model_.width, model_.height,
+                   techniqueConfig(model_).describe(), interval,
+                   interval > 0 ? 1000.0 / interval : 0.0, draws.size(), median(draws), window_cpu,
+                   process_cpu - window_cpu)
             << std::flush;
 }
 

@@ -105,11 +105,11 @@ inline void extendPendingRuns(PendingRun* pending, int& pending_count, PendingRu
 // times with and without the merging are in bench/README.md).
 //
 // `decide` must be monotonic: a rect inside another, with a depth range inside the other's,
-// culls at least the parts the larger one culls. The papers' tests are (a plane's maximum over a smaller box is
-// smaller; the z-range rejects compare with a narrower range). So tiles smaller than the bin
-// tile are first decided together on the whole rect with the bin tile's range: when that culls
-// everything, each of them would have been culled, and they are tallied so without a test each
-// (most pairs of a long shadow quad or wedge face and a tile are culled whole).
+// culls at least the parts the larger one culls. The papers' tests are (a plane's maximum over a
+// smaller box is smaller; the z-range rejects compare with a narrower range). So tiles smaller than
+// the bin tile are first decided together on the whole rect with the bin tile's range: when that
+// culls everything, each of them would have been culled, and they are tallied so without a test
+// each (most pairs of a long shadow quad or wedge face and a tile are culled whole).
 //
 // `whole_bits` are bits of a code that hold only where the triangle covers its culling tile's
 // cell (coversCell above) entirely: the walk clears them elsewhere before drawing, so that a

@@ -74,9 +74,11 @@ void addBlock(Scene& scene, const CityKinds& kinds, int bx, int bz, float x0, fl
     const bool tree = k % 2 == 0;
     const uint32_t kind = tree ? kinds.tree : kinds.lamp;
     const uint32_t material = tree ? kinds.foliage : kinds.metal;
-    addInstance(scene, kind, placeAt(vec3(x0 + along, 0.0f, z0 + 1.5f), tree ? float(h % 360) : -90.0f),
+    addInstance(scene, kind,
+                placeAt(vec3(x0 + along, 0.0f, z0 + 1.5f), tree ? float(h % 360) : -90.0f),
                 material);
-    addInstance(scene, kind, placeAt(vec3(x0 + 1.5f, 0.0f, z0 + along), tree ? float(h % 360) : 180.0f),
+    addInstance(scene, kind,
+                placeAt(vec3(x0 + 1.5f, 0.0f, z0 + along), tree ? float(h % 360) : 180.0f),
                 material);
   }
   addInstance(scene, kinds.bench, placeAt(vec3(x0 + 0.5f * kBlock, 0.0f, z0 + 2.2f), 180.0f),

@@ -36,7 +36,8 @@ Mesh makeBookshelf() {
       const float width = 0.05f + 0.04f * (0.5f + 0.5f * signedUnit(h));
       const float height = 0.3f + 0.15f * (0.5f + 0.5f * signedUnit(mixBits(h)));
       if (x + width > 1.9f) break;
-      box(vec3(x, y + 0.04f + kShelfGap, -0.18f), vec3(x + width, y + 0.04f + kShelfGap + height, 0.2f));
+      box(vec3(x, y + 0.04f + kShelfGap, -0.18f),
+          vec3(x + width, y + 0.04f + kShelfGap + height, 0.2f));
       x += width + kShelfGap;
     }
   }
@@ -96,11 +97,17 @@ void addBay(Scene& scene, const uint32_t (&kinds)[4], const uint32_t (&materials
 // Four walls and a ceiling around the hall, apart from each other: each its own closed box.
 void addHallShell(Scene& scene, float half, uint32_t material) {
   const float t = 0.3f, g = kShelfGap;
-  addMesh(scene, makeBox(vec3(-half - t, 0.0f, -half - t), vec3(half + t, kHallHeight, -half)), material);
-  addMesh(scene, makeBox(vec3(-half - t, 0.0f, half), vec3(half + t, kHallHeight, half + t)), material);
-  addMesh(scene, makeBox(vec3(-half - t, 0.0f, -half + g), vec3(-half, kHallHeight, half - g)), material);
-  addMesh(scene, makeBox(vec3(half, 0.0f, -half + g), vec3(half + t, kHallHeight, half - g)), material);
-  addMesh(scene, makeBox(vec3(-half - t, kHallHeight + g, -half - t), vec3(half + t, kHallHeight + t, half + t)),
+  addMesh(scene, makeBox(vec3(-half - t, 0.0f, -half - t), vec3(half + t, kHallHeight, -half)),
+          material);
+  addMesh(scene, makeBox(vec3(-half - t, 0.0f, half), vec3(half + t, kHallHeight, half + t)),
+          material);
+  addMesh(scene, makeBox(vec3(-half - t, 0.0f, -half + g), vec3(-half, kHallHeight, half - g)),
+          material);
+  addMesh(scene, makeBox(vec3(half, 0.0f, -half + g), vec3(half + t, kHallHeight, half - g)),
+          material);
+  addMesh(scene,
+          makeBox(vec3(-half - t, kHallHeight + g, -half - t),
+                  vec3(half + t, kHallHeight + t, half + t)),
           material);
 }
 
@@ -113,9 +120,10 @@ Scene makeInteriorScene(int bays) {
   Scene scene;
   const uint32_t floor = addMaterial(scene, "parquet", vec3(0.55f, 0.40f, 0.26f));
   const uint32_t plaster = addMaterial(scene, "plaster", vec3(0.80f, 0.78f, 0.72f));
-  const uint32_t materials[3] = {addMaterial(scene, "oak", vec3(0.45f, 0.30f, 0.18f)),
-                                 addMaterial(scene, "walnut", vec3(0.35f, 0.22f, 0.14f), vec3(0.2f), 40.0f),
-                                 addMaterial(scene, "stone", vec3(0.70f, 0.68f, 0.64f))};
+  const uint32_t materials[3] = {
+      addMaterial(scene, "oak", vec3(0.45f, 0.30f, 0.18f)),
+      addMaterial(scene, "walnut", vec3(0.35f, 0.22f, 0.14f), vec3(0.2f), 40.0f),
+      addMaterial(scene, "stone", vec3(0.70f, 0.68f, 0.64f))};
   const uint32_t kinds[4] = {addPrototype(scene, makeBookshelf()), addPrototype(scene, makeTable()),
                              addPrototype(scene, makeChair()),
                              addPrototype(scene, makeCylinder(vec3(0.0f), 0.3f, kHallHeight, 24))};
@@ -129,7 +137,8 @@ Scene makeInteriorScene(int bays) {
     }
   }
   // One lamp under the ceiling, off the hall's centre so the shelves' shadows fall at an angle.
-  addLight(scene, vec3(0.3f * half, kHallHeight - 0.7f, 0.2f * half), 0.25f, vec3(1.0f, 0.9f, 0.75f));
+  addLight(scene, vec3(0.3f * half, kHallHeight - 0.7f, 0.2f * half), 0.25f,
+           vec3(1.0f, 0.9f, 0.75f));
   scene.camera.position = vec3(half - 0.8f, 1.7f, half - 0.8f);
   scene.camera.target = vec3(-0.3f * half, 1.0f, -0.3f * half);
   scene.camera.fov_y = 60.0f;
@@ -137,8 +146,9 @@ Scene makeInteriorScene(int bays) {
   scene.settings.ambient = vec3(0.1f);
   // A walk along the hall's open side while the lamp slides the other way (a moving lamp).
   scene.path.frames = 60;
-  scene.path.camera = {{0.0f, scene.camera.position, scene.camera.target, 60.0f},
-                       {1.0f, vec3(half - 0.8f, 1.7f, -half + 0.8f), vec3(-0.3f * half, 1.0f, 0.3f * half), 60.0f}};
+  scene.path.camera = {
+      {0.0f, scene.camera.position, scene.camera.target, 60.0f},
+      {1.0f, vec3(half - 0.8f, 1.7f, -half + 0.8f), vec3(-0.3f * half, 1.0f, 0.3f * half), 60.0f}};
   LightPath lamp;
   lamp.keys = {{0.0f, scene.lights[0].center},
                {1.0f, vec3(-0.3f * half, kHallHeight - 0.7f, -0.2f * half)}};

@@ -57,8 +57,9 @@ Scene sizedScene(const SizedBuiltinEntry& entry, const std::string& name) {
   int size = entry.default_size;
   if (name != entry.name) {
     const std::string text = name.substr(entry.name.size() + 1);
-    const bool digits = !text.empty() && text.size() <= 3 &&
-                        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const bool digits =
+        !text.empty() && text.size() <= 3 &&
+        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
     PENUMBRA_CHECK(digits && std::stoi(text) >= 1 && std::stoi(text) <= entry.max_size,
                    "built-in scene '{}': the size after '{}:' must be a whole number of {} per "
                    "side in 1..{} (default {})",

@@ -33,12 +33,14 @@ void addWindows(Mesh& mesh, int floors, int count, float wall_width, float half_
       const float n0 = sign * (half_depth - 0.05f), n1 = sign * (half_depth + protrude);
       const float a0 = along - 0.5f * w, a1 = along + 0.5f * w;
       const vec3 lo = along_x ? vec3(a0, y, std::min(n0, n1)) : vec3(std::min(n0, n1), y, a0);
-      const vec3 hi = along_x ? vec3(a1, y + h, std::max(n0, n1)) : vec3(std::max(n0, n1), y + h, a1);
+      const vec3 hi =
+          along_x ? vec3(a1, y + h, std::max(n0, n1)) : vec3(std::max(n0, n1), y + h, a1);
       addBox(mesh, lo, hi);
       // A sill under the window, wider and deeper, kept apart from it.
       const float s0 = sign * (half_depth - 0.05f), s1 = sign * (half_depth + 2.0f * protrude);
       const float b0 = a0 - 0.08f, b1 = a1 + 0.08f, sy = y - kPartGap;
-      const vec3 slo = along_x ? vec3(b0, sy - 0.1f, std::min(s0, s1)) : vec3(std::min(s0, s1), sy - 0.1f, b0);
+      const vec3 slo =
+          along_x ? vec3(b0, sy - 0.1f, std::min(s0, s1)) : vec3(std::min(s0, s1), sy - 0.1f, b0);
       const vec3 shi = along_x ? vec3(b1, sy, std::max(s0, s1)) : vec3(std::max(s0, s1), sy, b1);
       addBox(mesh, slo, shi);
     }

@@ -24,9 +24,10 @@ void flattenInstances(Scene& scene) {
   for (size_t i = scene.instance_meshes; i < scene.instances.size(); ++i) {
     const MeshInstance& instance = scene.instances[i];
     const std::string label = fmt::format("instance {} ('{}')", i, instanceLabel(scene, i));
-    PENUMBRA_CHECK(instance.prototype < scene.prototypes.size() && scene.prototypes[instance.prototype],
-                   "{}: prototype index {} is out of range (the scene has {} prototypes)", label,
-                   instance.prototype, scene.prototypes.size());
+    PENUMBRA_CHECK(
+        instance.prototype < scene.prototypes.size() && scene.prototypes[instance.prototype],
+        "{}: prototype index {} is out of range (the scene has {} prototypes)", label,
+        instance.prototype, scene.prototypes.size());
     PENUMBRA_CHECK(instance.material < scene.materials.size(),
                    "{}: material index {} is out of range (the scene has {} materials)", label,
                    instance.material, scene.materials.size());

@@ -15,7 +15,8 @@ Mesh& addMesh(Scene& scene, Mesh mesh, uint32_t material);
 uint32_t addPrototype(Scene& scene, Mesh mesh);
 // Places prototype `prototype` with `transform` (object to world) and `material`.
 void addInstance(Scene& scene, uint32_t prototype, const mat4& transform, uint32_t material);
-void addLight(Scene& scene, vec3 center, float radius, vec3 color = vec3(1.0f), float intensity = 1.0f);
+void addLight(Scene& scene, vec3 center, float radius, vec3 color = vec3(1.0f),
+              float intensity = 1.0f);
 
 // A camera looking at `bounds` from direction `from` (target towards eye, need not be unit),
 // far enough back that the bounding sphere fits a `width` x `height` image, times `margin`.

@@ -35,7 +35,8 @@ void readMaterials(const JsonReader& reader, const Json& value, Scene& scene) {
     m.name = entry.contains("name") ? reader.string(entry["name"], JsonReader::child(path, "name"))
                                     : "material" + std::to_string(i);
     if (!names.insert(m.name).second) {
-      reader.fail(JsonReader::child(path, "name"), fmt::format("material '{}' is defined twice", m.name));
+      reader.fail(JsonReader::child(path, "name"),
+                  fmt::format("material '{}' is defined twice", m.name));
     }
     m.albedo = reader.vector3(entry, path, "albedo", m.albedo);
     checkNonNegative(reader, m.albedo, JsonReader::child(path, "albedo"));
@@ -146,10 +147,13 @@ std::shared_ptr<const LightTexture> readLightTexture(const JsonReader& reader, c
     }
   }
   reader.expectObject(value, path, {"width", "height", "texels"});
-  const int width = reader.integer(reader.required(value, path, "width"), JsonReader::child(path, "width"));
-  const int height = reader.integer(reader.required(value, path, "height"), JsonReader::child(path, "height"));
+  const int width =
+      reader.integer(reader.required(value, path, "width"), JsonReader::child(path, "width"));
+  const int height =
+      reader.integer(reader.required(value, path, "height"), JsonReader::child(path, "height"));
   if (width < 1 || width > 4096 || height < 1 || height > 4096) {
-    reader.fail(path, fmt::format("width and height must be in 1..4096 (got {}x{})", width, height));
+    reader.fail(path,
+                fmt::format("width and height must be in 1..4096 (got {}x{})", width, height));
   }
   const std::string texels_path = JsonReader::child(path, "texels");
   const Json& list = reader.required(value, path, "texels");
@@ -183,12 +187,15 @@ void readLights(const JsonReader& reader, const Json& value, Scene& scene,
                         {"center", "radius", "color", "intensity", "shape", "normal", "u", "v",
                          "texture"});
     Light light;
-    light.center = reader.vector3(reader.required(entry, path, "center"), JsonReader::child(path, "center"));
+    light.center =
+        reader.vector3(reader.required(entry, path, "center"), JsonReader::child(path, "center"));
     readLightShape(reader, entry, path, light);
-    light.radius = light.shape == LightShape::Rectangle ? light.radius
-                                                        : reader.number(entry, path, "radius", 0.0f);
+    light.radius = light.shape == LightShape::Rectangle
+                       ? light.radius
+                       : reader.number(entry, path, "radius", 0.0f);
     if (light.radius < 0.0f) {
-      reader.fail(JsonReader::child(path, "radius"), fmt::format("must be >= 0 (got {})", light.radius));
+      reader.fail(JsonReader::child(path, "radius"),
+                  fmt::format("must be >= 0 (got {})", light.radius));
     }
     checkLightRadius(reader, scene, light, JsonReader::child(path, "radius"));
     light.color = reader.vector3(entry, path, "color", light.color);
@@ -216,7 +223,8 @@ void readSettings(const JsonReader& reader, const Json& value, RenderSettings& s
     int& size = key[0] == 'w' ? settings.width : settings.height;
     size = reader.integer(value, "settings", key, size);
     if (size < 1 || size > 8192) {
-      reader.fail(JsonReader::child("settings", key), fmt::format("must be in 1..8192 (got {})", size));
+      reader.fail(JsonReader::child("settings", key),
+                  fmt::format("must be in 1..8192 (got {})", size));
     }
   }
   settings.ambient = reader.vector3(value, "settings", "ambient", settings.ambient);
@@ -279,7 +287,8 @@ Scene parseSceneOverBase(const JsonReader& reader, const Json& root, const Json&
   if (const Json* settings = JsonReader::find(root, "settings")) {
     readSettings(reader, *settings, scene.settings);
   }
-  if (const Json* camera = JsonReader::find(root, "camera")) readCamera(reader, *camera, scene.camera);
+  if (const Json* camera = JsonReader::find(root, "camera"))
+    readCamera(reader, *camera, scene.camera);
   if (const Json* lights = JsonReader::find(root, "lights")) {
     scene.lights.clear();
     readLights(reader, *lights, scene, base_dir);
@@ -333,7 +342,8 @@ Scene loadSceneFile(const std::string& path) {
   std::error_code ec;
   PENUMBRA_CHECK(fs::exists(path, ec), "{}: scene file not found", path);
   std::ifstream in(path, std::ios::binary);
-  PENUMBRA_CHECK(in.good() && fs::is_regular_file(path, ec), "{}: cannot read the scene file", path);
+  PENUMBRA_CHECK(in.good() && fs::is_regular_file(path, ec), "{}: cannot read the scene file",
+                 path);
   std::ostringstream text;
   text << in.rdbuf();
   Scene scene = parseSceneJson(text.str(), path, fs::path(path).parent_path().string());
@@ -375,7 +385,8 @@ Scene parseSceneJson(const std::string& text, const std::string& origin,
     readMeshEntry(reader, meshes[i], JsonReader::element("meshes", i), base_dir, arrays, scene);
   }
   const Json* prototypes = JsonReader::find(root, "prototypes");
-  if (prototypes && !instances) reader.fail("prototypes", "are given but no \"instances\" place them");
+  if (prototypes && !instances)
+    reader.fail("prototypes", "are given but no \"instances\" place them");
   readPrototypesAndInstances(reader, prototypes, instances, base_dir, arrays, scene);
   // Now, so that the lights' size check and the default camera see the instances.
   try {

@@ -18,7 +18,9 @@ namespace fs = std::filesystem;
 using FullJson = nlohmann::ordered_json;
 
 // As in scene_file_writer.cpp: through double, so that the text reads back as the same float.
-FullJson vectorValue(const vec3& v) { return FullJson::array({double(v.x), double(v.y), double(v.z)}); }
+FullJson vectorValue(const vec3& v) {
+  return FullJson::array({double(v.x), double(v.y), double(v.z)});
+}
 
 FullJson materialValue(const Material& m) {
   return {{"name", m.name},
@@ -37,7 +39,8 @@ FullJson matrixValue(const mat4& m) {
 
 // The OBJ is named by its place in the folder; the entry keeps the mesh's own name.
 FullJson meshEntry(const Mesh& mesh, const fs::path& folder, const std::string& relative) {
-  writeObj((folder / relative).string(), mesh, {"written by penumbra (writeSceneFile): " + mesh.name});
+  writeObj((folder / relative).string(), mesh,
+           {"written by penumbra (writeSceneFile): " + mesh.name});
   return {{"name", mesh.name},
           {"file", (folder.filename() / relative).generic_string()},
           {"material", mesh.material}};

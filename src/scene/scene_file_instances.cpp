@@ -48,7 +48,8 @@ uint32_t readPrototypeRef(const JsonReader& reader, const Json& value, const std
     if (scene.prototypes[i]->name == name) return uint32_t(i);
     names.push_back(scene.prototypes[i]->name);
   }
-  reader.fail(path, fmt::format("no prototype named '{}' (prototypes: {})", name, fmt::join(names, ", ")));
+  reader.fail(
+      path, fmt::format("no prototype named '{}' (prototypes: {})", name, fmt::join(names, ", ")));
 }
 
 void readPrototypes(const JsonReader& reader, const Json& value, const std::string& base_dir,
@@ -79,7 +80,8 @@ void readInstance(const JsonReader& reader, const Json& entry, const std::string
     reader.fail(path, "takes \"transform\" or \"matrix\", not both");
   }
   if (transform) {
-    instance.transform = readTransformValue(reader, *transform, JsonReader::child(path, "transform"));
+    instance.transform =
+        readTransformValue(reader, *transform, JsonReader::child(path, "transform"));
   }
   if (matrix) instance.transform = readMatrix(reader, *matrix, JsonReader::child(path, "matrix"));
   const mat3 linear(instance.transform);

@@ -35,46 +35,55 @@ struct GeneratorSpec {
 // Parameters and defaults are documented in docs/scene-format.md.
 const std::vector<GeneratorSpec>& generators() {
   static const std::vector<GeneratorSpec> kGenerators = {
-      {"plane", {"center", "half_size"},
+      {"plane",
+       {"center", "half_size"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          return makeGroundPlane(r.vector3(e, p, "center", vec3(0.0f)),
                                 r.number(e, p, "half_size", 10.0f));
        }},
-      {"box", {"min", "max"},
+      {"box",
+       {"min", "max"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          return makeBox(r.vector3(r.required(e, p, "min"), JsonReader::child(p, "min")),
                         r.vector3(r.required(e, p, "max"), JsonReader::child(p, "max")));
        }},
-      {"sphere", {"center", "radius", "segments", "rings"},
+      {"sphere",
+       {"center", "radius", "segments", "rings"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          return makeSphere(r.vector3(e, p, "center", vec3(0.0f)), r.number(e, p, "radius", 1.0f),
                            r.integer(e, p, "segments", 32), r.integer(e, p, "rings", 16));
        }},
-      {"cylinder", {"base", "radius", "height", "segments"},
+      {"cylinder",
+       {"base", "radius", "height", "segments"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          return makeCylinder(r.vector3(e, p, "base", vec3(0.0f)), r.number(e, p, "radius", 0.5f),
                              r.number(e, p, "height", 1.0f), r.integer(e, p, "segments", 24));
        }},
-      {"disk", {"center", "normal", "radius", "segments"},
+      {"disk",
+       {"center", "normal", "radius", "segments"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          return makeDisk(r.vector3(e, p, "center", vec3(0.0f)),
                          r.vector3(e, p, "normal", vec3(0.0f, 1.0f, 0.0f)),
                          r.number(e, p, "radius", 1.0f), r.integer(e, p, "segments", 64));
        }},
-      {"fractal", {"level", "half_size", "roughness", "seed"},
+      {"fractal",
+       {"level", "half_size", "roughness", "seed"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          const int seed = r.integer(e, p, "seed", 1);
          if (seed < 0) r.fail(JsonReader::child(p, "seed"), "must be >= 0");
          return makeFractalTerrain(r.integer(e, p, "level", 8), r.number(e, p, "half_size", 5.0f),
                                    r.number(e, p, "roughness", 0.5f), uint32_t(seed));
        }},
-      {"torus", {"center", "major_radius", "minor_radius", "segments", "sides"},
+      {"torus",
+       {"center", "major_radius", "minor_radius", "segments", "sides"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          return makeTorus(r.vector3(e, p, "center", vec3(0.0f)),
-                          r.number(e, p, "major_radius", 1.0f), r.number(e, p, "minor_radius", 0.25f),
-                          r.integer(e, p, "segments", 48), r.integer(e, p, "sides", 16));
+                          r.number(e, p, "major_radius", 1.0f),
+                          r.number(e, p, "minor_radius", 0.25f), r.integer(e, p, "segments", 48),
+                          r.integer(e, p, "sides", 16));
        }},
-      {"teapot", {"base", "height"},
+      {"teapot",
+       {"base", "height"},
        [](const JsonReader& r, const Json& e, const std::string& p) {
          return makeTeapot(r.vector3(e, p, "base", vec3(0.0f)), r.number(e, p, "height", 1.0f));
        }},
@@ -95,7 +104,8 @@ mat4 readRotation(const JsonReader& reader, const Json& value, const std::string
     return r;
   }
   reader.expectObject(value, path, {"axis", "degrees"});
-  const vec3 axis = reader.vector3(reader.required(value, path, "axis"), JsonReader::child(path, "axis"));
+  const vec3 axis =
+      reader.vector3(reader.required(value, path, "axis"), JsonReader::child(path, "axis"));
   if (glm::length(axis) == 0.0f) reader.fail(JsonReader::child(path, "axis"), "must not be zero");
   const float degrees =
       reader.number(reader.required(value, path, "degrees"), JsonReader::child(path, "degrees"));
@@ -148,7 +158,8 @@ uint32_t readMaterialRef(const JsonReader& reader, const Json& value, const std:
     if (scene.materials[i].name == name) return uint32_t(i);
     names.push_back(scene.materials[i].name);
   }
-  reader.fail(path, fmt::format("no material named '{}' (materials: {})", name, fmt::join(names, ", ")));
+  reader.fail(path,
+              fmt::format("no material named '{}' (materials: {})", name, fmt::join(names, ", ")));
 }
 
 Mesh readFileMesh(const JsonReader& reader, const Json& entry, const std::string& path,
@@ -210,8 +221,8 @@ Mesh readArraysMesh(const JsonReader& reader, const Json& entry, const std::stri
                                          arrays.size()));
   }
   const Json* name = JsonReader::find(entry, "name");
-  const std::string mesh_name =
-      name ? reader.string(*name, JsonReader::child(path, "name")) : fmt::format("arrays {}", index);
+  const std::string mesh_name = name ? reader.string(*name, JsonReader::child(path, "name"))
+                                     : fmt::format("arrays {}", index);
   try {
     return meshFromArrays(arrays[size_t(index)], mesh_name);
   } catch (const Error& e) {

@@ -6,12 +6,14 @@ namespace penumbra {
 
 namespace {
 
-float readKeyTime(const JsonReader& reader, const Json& key, const std::string& path, float previous,
-                  size_t index) {
-  const float time = reader.number(reader.required(key, path, "time"), JsonReader::child(path, "time"));
+float readKeyTime(const JsonReader& reader, const Json& key, const std::string& path,
+                  float previous, size_t index) {
+  const float time =
+      reader.number(reader.required(key, path, "time"), JsonReader::child(path, "time"));
   if (index > 0 && !(time > previous)) {
-    reader.fail(JsonReader::child(path, "time"),
-                fmt::format("{} must be greater than the previous key's time ({})", time, previous));
+    reader.fail(
+        JsonReader::child(path, "time"),
+        fmt::format("{} must be greater than the previous key's time ({})", time, previous));
   }
   return time;
 }
@@ -89,7 +91,8 @@ void readScenePath(const JsonReader& reader, const Json& value, Scene& scene) {
     }
   }
   if (path.camera.empty() && path.lights.empty()) {
-    reader.fail("path", "moves neither the camera nor a light (give \"camera\" or \"lights\" keys)");
+    reader.fail("path",
+                "moves neither the camera nor a light (give \"camera\" or \"lights\" keys)");
   }
   scene.path = std::move(path);
 }

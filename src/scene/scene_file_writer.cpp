@@ -16,7 +16,9 @@ using WriterJson = nlohmann::ordered_json;
 
 // A float goes through double, whose shortest decimal text nlohmann writes: parsing it gives
 // the same double, and so the same float (scene_file.cpp reads numbers as double).
-WriterJson vectorJson(const vec3& v) { return WriterJson::array({double(v.x), double(v.y), double(v.z)}); }
+WriterJson vectorJson(const vec3& v) {
+  return WriterJson::array({double(v.x), double(v.y), double(v.z)});
+}
 
 WriterJson textureJson(const LightTexture& texture) {
   WriterJson texels = WriterJson::array();
@@ -88,7 +90,8 @@ std::string sceneOverBaseJson(const Scene& scene, const std::string& base) {
   text += "  \"camera\": " + camera.dump() + ",\n";
   text += "  \"lights\": [\n";
   for (size_t i = 0; i < scene.lights.size(); ++i) {
-    text += "    " + lightJson(scene.lights[i]).dump() + (i + 1 < scene.lights.size() ? ",\n" : "\n");
+    text +=
+        "    " + lightJson(scene.lights[i]).dump() + (i + 1 < scene.lights.size() ? ",\n" : "\n");
   }
   text += "  ],\n";
   if (!scene.path.empty()) text += "  \"path\": " + pathJson(scene.path).dump() + ",\n";

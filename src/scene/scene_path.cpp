@@ -63,7 +63,8 @@ float ScenePath::frameTime(int frame) const {
 void checkScenePath(const Scene& scene) {
   const ScenePath& path = scene.path;
   if (path.empty()) {
-    PENUMBRA_CHECK(path.camera.empty() && path.lights.empty(), "path: keys are given but no frames");
+    PENUMBRA_CHECK(path.camera.empty() && path.lights.empty(),
+                   "path: keys are given but no frames");
     return;
   }
   PENUMBRA_CHECK(path.frames >= 1, "path: frames must be >= 1 (got {})", path.frames);
@@ -86,15 +87,16 @@ void checkScenePath(const Scene& scene) {
                    light.light, scene.lights.size());
     checkKeyTimes(light.keys, "light");
     for (size_t k = 0; k < light.keys.size(); ++k) {
-      PENUMBRA_CHECK(isFinite(light.keys[k].center), "path: lights[{}] key {}: centre is not finite",
-                     i, k);
+      PENUMBRA_CHECK(isFinite(light.keys[k].center),
+                     "path: lights[{}] key {}: centre is not finite", i, k);
     }
   }
 }
 
 void applyPathFrame(Scene& scene, int frame) {
   const ScenePath& path = scene.path;
-  PENUMBRA_CHECK(!path.empty(), "scene '{}' has no path (docs/scene-format.md, \"path\")", scene.name);
+  PENUMBRA_CHECK(!path.empty(), "scene '{}' has no path (docs/scene-format.md, \"path\")",
+                 scene.name);
   PENUMBRA_CHECK(frame >= 0 && frame < path.frames,
                  "scene '{}': frame {} is out of range (its path has frames 0..{})", scene.name,
                  frame, path.frames - 1);

@@ -65,8 +65,9 @@ void TechniqueConfig::set(const std::string& option, const std::string& value) {
     std::vector<std::string> known;
     for (const OptionSpec& s : info_->options.specs()) known.push_back("--" + s.name);
     throw Error(fmt::format("--{} is not an option of technique '{}' ({})", option, info_->name,
-                            known.empty() ? std::string("it has none")
-                                          : fmt::format("its options: {}", fmt::join(known, ", "))));
+                            known.empty()
+                                ? std::string("it has none")
+                                : fmt::format("its options: {}", fmt::join(known, ", "))));
   }
   try {
     spec->set(options_, value);

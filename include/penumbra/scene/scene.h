@@ -30,9 +30,9 @@ struct Scene {
   // Meshes placed many times (instances.h). Each prototype is held once, in object space, and
   // shared by every instance and every copy of the scene. The techniques read world-space
   // meshes, so finalize() appends one transformed copy per instance to `meshes`
-  // (flattenInstances, src/scene/flatten_instances.cpp): the last `instance_meshes` entries of `meshes`
-  // are those copies, in the order of `instances`, and cost the memory of the triangles they
-  // hold (docs/scene-format.md, "instances", gives the figures).
+  // (flattenInstances, src/scene/flatten_instances.cpp): the last `instance_meshes` entries of
+  // `meshes` are those copies, in the order of `instances`, and cost the memory of the triangles
+  // they hold (docs/scene-format.md, "instances", gives the figures).
   std::vector<std::shared_ptr<const Mesh>> prototypes;
   std::vector<MeshInstance> instances;
   size_t instance_meshes = 0;

@@ -59,11 +59,11 @@ class ShadowMasks final : public PreparedTechnique {
     o.simd = context.simd;
     // The pass that multiplies the frame with the mask: a last rectangle blending with the
     // destination alpha, or the scene drawn again into the colour buffer (Table 1).
-    const std::string apply =
-        channel_ == MaskChannel::Alpha
-            ? (options_.normalisation == MaskNormalisation::MaxBlend ? "mask rectangle 2 multiply by alpha"
-                                                                   : "mask rectangle 4 multiply by alpha")
-            : "mask render pass 2 scene times mask";
+    const std::string apply = channel_ == MaskChannel::Alpha
+                                  ? (options_.normalisation == MaskNormalisation::MaxBlend
+                                         ? "mask rectangle 2 multiply by alpha"
+                                         : "mask rectangle 4 multiply by alpha")
+                                  : "mask render pass 2 scene times mask";
     const auto lit = [](const MaskBuffer& mask) {
       return [&mask](int x, int y) { return maskLit(mask.value(x, y)) ? 1.0f : 0.0f; };
     };

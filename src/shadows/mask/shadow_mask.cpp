@@ -105,7 +105,8 @@ void drawTileVolumes(const MaskVolumes& volumes, const uint32_t* first, const ui
     uint64_t lost = 0;
     for (const bool halves : {true, false})
       for (const uint32_t* k = run; k != end; ++k)
-        lost += drawPolygon(volumes.setup[*k], halves, positive_doubles, box, depth, target, simd, w);
+        lost +=
+            drawPolygon(volumes.setup[*k], halves, positive_doubles, box, depth, target, simd, w);
     if (lost != 0) w.saturated_volumes.push_back(volume);
     run = end;
   }
@@ -177,7 +178,8 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
       drawTileVolumes(volumes, first, last, box, depth, target, positive_doubles, options.simd,
                       work[tile]);
       for (int y = box.y0; y <= box.y1; ++y)
-        std::memcpy(mask.pixel(box.x0, y), tile_mask->bytes + size_t(y - box.y0) * kBinTileSize * bytes,
+        std::memcpy(mask.pixel(box.x0, y),
+                    tile_mask->bytes + size_t(y - box.y0) * kBinTileSize * bytes,
                     size_t(box.x1 - box.x0 + 1) * bytes);
     });
     uint64_t saturated_pixels = 0;
@@ -203,9 +205,10 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
     rectanglePass(mask, stats, "mask rectangle 1 *2", threePassRectangle1);
     rectanglePass(mask, stats, "mask rectangle 2 invert", threePassRectangle2);
     const MaskShadowMode mode = options.shadow;
-    rectanglePass(mask, stats,
-                  mode == MaskShadowMode::Attenuated ? "mask rectangle 3 +1/2" : "mask rectangle 3 *2",
-                  [mode](uint32_t v) { return threePassRectangle3(v, mode); });
+    rectanglePass(
+        mask, stats,
+        mode == MaskShadowMode::Attenuated ? "mask rectangle 3 +1/2" : "mask rectangle 3 *2",
+        [mode](uint32_t v) { return threePassRectangle3(v, mode); });
   }
   return mask;
 }

@@ -9,8 +9,9 @@
 // is compared with p's distance along the face's axis, less a bias (growing with each tap's
 // distance from the kernel's centre by the ring bias, map_lookup_kernel.h); visibility is the
 // fraction of lookups that find no occluder in front (percentage-closer filtering, Reeves,
-// Salesin & Cook 1987). With --stencil-limit, the spot's frustum is first rasterized as a volume into a
-// stencil and only the pixels inside it are looked up (Arvo & Aila 2003; thesis section 4.2).
+// Salesin & Cook 1987). With --stencil-limit, the spot's frustum is first rasterized as a volume
+// into a stencil and only the pixels inside it are looked up (Arvo & Aila 2003; thesis
+// section 4.2).
 //
 // The lookups run a row's points face by face through the PCF kernel (map_lookup_kernel.h),
 // SIMD over points, or its scalar twin (RenderContext::simd).
@@ -162,7 +163,8 @@ TechniqueInfo shadowMapTechnique() {
                 o.resolution, kProjection[int(o.projection)], o.pcf_kernel, o.pcf_kernel,
                 formatNumber(o.constant_bias), formatNumber(o.slope_bias),
                 formatNumber(o.ring_bias), formatNumber(o.normal_offset));
-            if (o.spot_fov > 0.0) text += fmt::format(", spotlight {} deg", formatNumber(o.spot_fov));
+            if (o.spot_fov > 0.0)
+              text += fmt::format(", spotlight {} deg", formatNumber(o.spot_fov));
             if (o.stencil_limit) text += ", stencil-limited";
             return text;
           })

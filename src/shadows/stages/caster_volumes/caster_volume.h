@@ -58,7 +58,8 @@ void forEachCap(const Mesh& mesh, const CasterVolume& volume, Add&& add) {
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
     const int8_t o = volume.silhouette.orientation[t];
     if (o == 0) continue;
-    const uint32_t a = mesh.indices[t * 3], b = mesh.indices[t * 3 + 1], c = mesh.indices[t * 3 + 2];
+    const uint32_t a = mesh.indices[t * 3], b = mesh.indices[t * 3 + 1],
+                   c = mesh.indices[t * 3 + 2];
     add(volume.finite + a, volume.finite + b, volume.finite + c, int32_t(o));
     add(volume.infinite + a, volume.infinite + b, volume.infinite + c, -int32_t(o));
   }

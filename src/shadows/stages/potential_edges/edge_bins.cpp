@@ -582,9 +582,9 @@ void buildCoarseTiles(TileScan& scan, int columns, int rows, int step) {
 constexpr int kCoarseMinTiles = 32;
 
 // The kept bin tiles of `box` (edgeTileCandidates: the same tiles, in row order within each run
-// of coarse tiles, and the same `tested`): in a large box the coarse tiles are tested first and only the bin tiles of
-// those kept, a run of kept coarse tiles in a row at a time. `coarse_kept` has room for every
-// coarse tile.
+// of coarse tiles, and the same `tested`): in a large box the coarse tiles are tested first and
+// only the bin tiles of those kept, a run of kept coarse tiles in a row at a time. `coarse_kept`
+// has room for every coarse tile.
 int scanTiles(const EdgeScreenTest& test, const EdgeTileBox& box, const TileScan& scan,
               bool simd, uint32_t* kept, uint32_t* coarse_kept, int& tested) {
   const int step = scan.coarse.step;
