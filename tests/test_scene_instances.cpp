@@ -99,6 +99,25 @@ std::string withInstances(const std::string& instances, const std::string& extra
          extra + R"("instances": )" + instances + R"(, "lights": [{"center": [0, 9, 0]}]})";
 }
 
+// A file that places a large mesh many times would have every technique's world-space copies
+// run the machine out of memory; it is refused before any copy, naming the file and the count.
+TEST(SceneInstances, TooManyFlattenedTrianglesAreRefusedBeforeCopying) {
+  // A sphere of 512 x 512 quads (about half a million triangles) placed 300 times.
+  std::string instances;
+  for (int i = 0; i < 300; ++i)
+    instances += fmt::format(R"({}{{"prototype": 0, "transform": {{"translate": [{}, 0, 0]}}}})",
+                             i == 0 ? "" : ", ", 3 * i);
+  const std::string text = fmt::format(R"({{
+  "prototypes": [{{"generator": "sphere", "radius": 1, "segments": 512, "rings": 512}}],
+  "instances": [{}],
+  "lights": [{{"center": [0, 10, 0], "radius": 0.5}}]
+}})", instances);
+  const std::string message = errorMessage([&] { (void)parse(text); });
+  EXPECT_TRUE(contains(message, "city.json: instances: ")) << message;
+  EXPECT_TRUE(contains(message, "300 instances hold")) << message;
+  EXPECT_TRUE(contains(message, "more than the 134217728 a scene can render")) << message;
+}
+
 // Each bad entry names the file, the key path and the problem, so a typo in a file of
 // thousands of instances is found at once.
 TEST(SceneInstances, BadEntriesNameTheFileKeyAndProblem) {

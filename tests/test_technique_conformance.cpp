@@ -95,7 +95,7 @@ const LightsResult& oracle(const std::string& scene, const Frame& f, bool soft) 
   LightsResult r;
   if (auto images = testing::loadOracleImages(disk_key, f.scene.lights.size(), f.view.width,
                                               f.view.height)) {
-    for (Image<float>& image : *images) r.lights.push_back({std::move(image), {}});
+    for (Image<float>& image : *images) r.lights.push_back({std::move(image), {}, {}, {}});
   } else {
     TechniqueConfig config("reference");
     config.options<ReferenceOptions>().rays = 1024;

@@ -20,6 +20,20 @@ void flattenInstances(Scene& scene) {
                      scene.instance_meshes <= scene.meshes.size(),
                  "scene '{}': {} instance meshes counted for {} instances", scene.name,
                  scene.instance_meshes, scene.instances.size());
+  // Counted before any copy, so that a file placing a large mesh millions of times is refused
+  // with a message instead of running out of memory.
+  uint64_t triangles = 0;
+  for (const Mesh& mesh : scene.meshes) triangles += mesh.triangleCount();
+  for (size_t i = scene.instance_meshes; i < scene.instances.size(); ++i) {
+    const uint32_t prototype = scene.instances[i].prototype;
+    if (prototype < scene.prototypes.size() && scene.prototypes[prototype])
+      triangles += scene.prototypes[prototype]->triangleCount();
+  }
+  PENUMBRA_CHECK(triangles <= kMaxFlattenedTriangles,
+                 "scene '{}': its meshes and {} instances hold {} triangles, more than the {} a "
+                 "scene can render (each instance is a world-space copy, about 100 bytes a "
+                 "triangle)",
+                 scene.name, scene.instances.size(), triangles, kMaxFlattenedTriangles);
   scene.meshes.reserve(scene.meshes.size() + scene.instances.size() - scene.instance_meshes);
   for (size_t i = scene.instance_meshes; i < scene.instances.size(); ++i) {
     const MeshInstance& instance = scene.instances[i];

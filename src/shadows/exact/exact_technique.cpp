@@ -439,7 +439,7 @@ std::shared_ptr<const PotentialEdges> ExactSoftShadows::cachedPotentialEdges(
   }
   auto edges = std::make_shared<const PotentialEdges>(potentialEdges(scene_, geometry_, light));
   const std::lock_guard<std::mutex> lock(edge_cache_mutex_);
-  EdgeCacheEntry entry{light.center, light.radius, ++edge_cache_clock_, edges};
+  EdgeCacheEntry entry{light.center, light.radius, ++edge_cache_clock_, edges, nullptr};
   if (edge_cache_.size() < kEdgeCacheLights) {
     edge_cache_.push_back(std::move(entry));
   } else {
