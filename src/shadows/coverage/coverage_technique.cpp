@@ -505,7 +505,8 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   ShadowStencilOptions stencil_options;
   stencil_options.simd = context.simd;
   // A point light: pass 1 alone, the hard shadow volume bit for bit.
-  if (!(light.radius > 0.0f)) return hardShadowVolumes(scene_, light, view, eye, stencil_options);
+  if (!(light.radius > 0.0f))
+    return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
   // A textured rectangle (light.h): the exact per-channel path beside the area path.
   const bool textured = light.texture != nullptr;
   PENUMBRA_CHECK(!textured || options_.table == CoverageTable::Analytic,

@@ -803,11 +803,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   if (light.radius == 0.0f) {
     ShadowStencilOptions stencil_options;
     stencil_options.simd = context.simd;
-    std::vector<DebugLayer> layers;
-    if (context.debug_layers) stencil_options.debug_layers = &layers;
-    TechniqueResult result = hardShadowVolumes(scene_, light, view, eye, stencil_options);
-    result.debug_layers = std::move(layers);
-    return result;
+    return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
   }
   TechniqueResult result;
   Stats& stats = result.stats;

@@ -37,7 +37,8 @@ class HeckbertHerf final : public PreparedTechnique {
     ShadowStencilOptions stencil_options;
     stencil_options.simd = context.simd;
     // A point light: one render, the hard shadow volume's image exactly.
-    if (!(light.radius > 0.0f)) return hardShadowVolumes(scene_, light, view, eye, stencil_options);
+    if (!(light.radius > 0.0f))
+      return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
     const std::vector<vec3> points =
         heckbertHerfPoints(light, options_.samples, options_.seed, scene_.bounds().center());
     TechniqueResult result;

@@ -28,11 +28,7 @@ class ShadowVolumes final : public PreparedTechnique {
     stencil_options.mode = options_.mode;
     stencil_options.two_level_stencil = options_.two_level_stencil;
     stencil_options.simd = context.simd;
-    std::vector<DebugLayer> layers;
-    if (context.debug_layers) stencil_options.debug_layers = &layers;
-    TechniqueResult result = hardShadowVolumes(scene_, light, view, eye, stencil_options);
-    result.debug_layers = std::move(layers);
-    return result;
+    return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
   }
 
  private:

@@ -160,10 +160,13 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
 }
 
 TechniqueResult hardShadowVolumes(const Scene& scene, const Light& light, const View& view,
-                                  const EyeBuffers& eye, const ShadowStencilOptions& options) {
+                                  const EyeBuffers& eye, const ShadowStencilOptions& options,
+                                  bool debug_layers) {
   TechniqueResult result;
+  ShadowStencilOptions stencil_options = options;
+  if (debug_layers) stencil_options.debug_layers = &result.debug_layers;
   const Image<int32_t> stencil =
-      shadowStencil(scene, light.center, view, eye, options, result.stats);
+      shadowStencil(scene, light.center, view, eye, stencil_options, result.stats);
   PassTimer timer(result.stats, "resolve");
   // resolveVisibility's rule with "lit where the stencil is 0", a row at a time.
   const FacingAway away(scene, light, view);

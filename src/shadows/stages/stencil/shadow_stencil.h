@@ -64,8 +64,10 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
 
 // The hard shadow volume's answer for a point light at the light's centre: lit where the stencil
 // is 0, unlit where the visible triangle faces away (facing_away.h), 1 on the background.
-// Adds the pass "resolve".
+// Adds the pass "resolve". With `debug_layers` (RenderContext::debug_layers), the stencil's
+// layers go into the result's debug_layers.
 TechniqueResult hardShadowVolumes(const Scene& scene, const Light& light, const View& view,
-                                  const EyeBuffers& eye, const ShadowStencilOptions& options);
+                                  const EyeBuffers& eye, const ShadowStencilOptions& options,
+                                  bool debug_layers = false);
 
 }  // namespace penumbra
