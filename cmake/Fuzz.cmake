@@ -17,10 +17,8 @@ if(PENUMBRA_BUILD_FUZZ)
   target_include_directories(penumbra_fuzz_lib
     PUBLIC ${PROJECT_SOURCE_DIR}/include ${PROJECT_SOURCE_DIR}/include/penumbra
            ${PROJECT_SOURCE_DIR}/src)
-  target_compile_definitions(penumbra_fuzz_lib
-    PUBLIC GLM_FORCE_XYZW_ONLY
-    PRIVATE PENUMBRA_DEFAULT_MODELS_DIR="${PROJECT_SOURCE_DIR}/../shared/models"
-            PENUMBRA_SHIPPED_MODELS_DIR="${PROJECT_SOURCE_DIR}/models")
+  # src/scene/scene_file.cpp gets its models paths from its source properties (CMakeLists.txt).
+  target_compile_definitions(penumbra_fuzz_lib PUBLIC GLM_FORCE_XYZW_ONLY)
   target_link_libraries(penumbra_fuzz_lib
     PUBLIC glm::glm fmt::fmt TBB::tbb assimp::assimp meshoptimizer::meshoptimizer
            nlohmann_json::nlohmann_json hwy::hwy Threads::Threads PNG::PNG tinyexr::tinyexr)
