@@ -80,6 +80,18 @@ void addCover(ClipTriangles& tris, double d, int32_t id) {
   tris.add(v, v + 1, v + 2, id);
 }
 
+// The same screen covered by two triangles (a quad) at constant depth d: the cells its diagonal
+// crosses are filled only by the two together.
+void addQuad(ClipTriangles& tris, double d, int32_t id) {
+  const uint32_t v = uint32_t(tris.clip.size());
+  tris.clip.push_back(vec4(-1.0f, -1.0f, float(d), 1.0f));
+  tris.clip.push_back(vec4(1.0f, -1.0f, float(d), 1.0f));
+  tris.clip.push_back(vec4(1.0f, 1.0f, float(d), 1.0f));
+  tris.clip.push_back(vec4(-1.0f, 1.0f, float(d), 1.0f));
+  tris.add(v, v + 1, v + 2, id);
+  tris.add(v, v + 2, v + 3, id + 1);
+}
+
 // Every ring size, from one triangle to more than the scene: a culled triangle that could
 // have kept a pixel (a tie with a later triangle, a bound taken on the wrong side of a float
 // rounding) would show here as a changed depth or id.
@@ -119,11 +131,9 @@ TEST(DelayStream, ScalarAndOneThreadGiveTheSameBuffersAndCounts) {
 // when the occluder enters can cull them. A ring of one triangle is the early z-max test in
 // submission order: it may skip pixels but never a depth pass, since whatever it culls would
 // have failed the depth test at each pixel anyway.
-TEST(DelayStream, CullsTrianglesALaterOccluderHides) {
-  const int width = 128, height = 96;
+ClipTriangles hiddenThenOccluder(int width, int height, int hidden, bool quad) {
   ClipTriangles tris;
   TestRandom rng(1);
-  const int hidden = 400;
   for (int t = 0; t < hidden; ++t) {
     const double cx = rng.uniform(0, width), cy = rng.uniform(0, height);
     for (int k = 0; k < 3; ++k)
@@ -131,22 +141,34 @@ TEST(DelayStream, CullsTrianglesALaterOccluderHides) {
                                        rng.uniform(0.05, 0.3), width, height));
     tris.add(uint32_t(t * 3), uint32_t(t * 3 + 1), uint32_t(t * 3 + 2), t);
   }
-  addCover(tris, 0.6, hidden);
-  const DepthFrame plain = draw(tris, width, height, 0);
-  const DepthFrame one = draw(tris, width, height, 1);
-  const DepthFrame whole = draw(tris, width, height, size_t(1) << 20);
-  expectSameBuffers(plain, one, "ring of one triangle");
-  expectSameBuffers(plain, whole, "ring holding the scene");
-  EXPECT_EQ(one.stats.counter("eye_depth_passes"), plain.stats.counter("eye_depth_passes"));
-  EXPECT_LT(one.stats.counter("delay_culled_pairs"), whole.stats.counter("delay_culled_pairs"));
-  EXPECT_GE(whole.stats.counter("delay_culled_pairs"), uint64_t(hidden));
-  // Every hidden triangle goes: each pixel passes the depth test once, for the occluder.
-  const uint64_t covered = whole.stats.counter("eye_covered_pixels");
-  EXPECT_EQ(covered, uint64_t(width * height));
-  EXPECT_EQ(whole.stats.counter("eye_depth_passes"), covered);
-  EXPECT_LT(whole.stats.pixels_rasterized, plain.stats.pixels_rasterized / 2);
-  for (size_t p = 0; p < whole.primitive.size(); ++p)
-    ASSERT_GE(whole.primitive[p], uint32_t(hidden)) << "a hidden triangle won pixel " << p;
+  if (quad)
+    addQuad(tris, 0.6, hidden);
+  else
+    addCover(tris, 0.6, hidden);
+  return tris;
+}
+
+TEST(DelayStream, CullsTrianglesALaterOccluderHides) {
+  const int width = 128, height = 96, hidden = 400;
+  for (const bool quad : {false, true}) {
+    SCOPED_TRACE(quad ? "two triangles fill the cells together" : "one triangle covers all");
+    const ClipTriangles tris = hiddenThenOccluder(width, height, hidden, quad);
+    const DepthFrame plain = draw(tris, width, height, 0);
+    const DepthFrame one = draw(tris, width, height, 1);
+    const DepthFrame whole = draw(tris, width, height, size_t(1) << 20);
+    expectSameBuffers(plain, one, "ring of one triangle");
+    expectSameBuffers(plain, whole, "ring holding the scene");
+    EXPECT_EQ(one.stats.counter("eye_depth_passes"), plain.stats.counter("eye_depth_passes"));
+    EXPECT_LT(one.stats.counter("delay_culled_pairs"), whole.stats.counter("delay_culled_pairs"));
+    EXPECT_GE(whole.stats.counter("delay_culled_pairs"), uint64_t(hidden));
+    // Every hidden triangle goes: each pixel passes the depth test once, for the occluder.
+    const uint64_t covered = whole.stats.counter("eye_covered_pixels");
+    EXPECT_EQ(covered, uint64_t(width * height));
+    EXPECT_EQ(whole.stats.counter("eye_depth_passes"), covered);
+    EXPECT_LT(whole.stats.pixels_rasterized, plain.stats.pixels_rasterized / 2);
+    for (size_t p = 0; p < whole.primitive.size(); ++p)
+      ASSERT_GE(whole.primitive[p], uint32_t(hidden)) << "a hidden triangle won pixel " << p;
+  }
 }
 
 // At a tie the earlier triangle keeps the pixel: an occluder at exactly the depth of the

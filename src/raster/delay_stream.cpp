@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "raster/cull_tiles.h"
@@ -16,7 +17,14 @@ size_t delayStreamTriangles(size_t ring_bytes) {
 
 DelayStreamTile::DelayStreamTile(const std::vector<SetupTriangle>& setup, const uint32_t* begin,
                                  const uint32_t* end, const TileBox& box, size_t ring_triangles)
-    : setup_(setup), next_(begin), end_(end), box_(box), ring_(std::max<size_t>(1, ring_triangles)) {}
+    : setup_(setup),
+      next_(begin),
+      end_(end),
+      box_(box),
+      ring_(std::max<size_t>(1, ring_triangles)) {
+  std::fill(std::begin(layer_farthest_), std::end(layer_farthest_),
+            std::numeric_limits<float>::infinity());
+}
 
 TileEdges DelayStreamTile::cellRect(const TileEdges& e, int cx, int cy) const {
   TileEdges cell = e;
@@ -28,33 +36,88 @@ TileEdges DelayStreamTile::cellRect(const TileEdges& e, int cx, int cy) const {
   return cell;
 }
 
+uint64_t DelayStreamTile::coverage(const TileEdges& e, int cx, int cy) const {
+  const TileEdges cell = cellRect(e, cx, cy);
+  const int x0 = box_.x0 + cx * kCellSize, y0 = box_.y0 + cy * kCellSize;
+  uint64_t mask = 0;
+  for (int y = cell.y0; y <= cell.y1; ++y) {
+    const int ry = y - e.ty0;
+    for (int x = cell.x0; x <= cell.x1; ++x) {
+      const int rx = x - e.tx0;
+      bool inside = true;
+      for (int i = 0; i < 3; ++i) inside &= e.e0[i] + e.dx[i] * rx + e.dy[i] * ry >= 0;
+      if (inside) mask |= uint64_t(1) << ((y - y0) * kCellSize + (x - x0));
+    }
+  }
+  return mask;
+}
+
+uint64_t DelayStreamTile::cellPixels(int cx, int cy) const {
+  const int w = std::min(kCellSize, box_.x1 - (box_.x0 + cx * kCellSize) + 1);
+  const int h = std::min(kCellSize, box_.y1 - (box_.y0 + cy * kCellSize) + 1);
+  const uint64_t row = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
+  uint64_t mask = 0;
+  for (int y = 0; y < h; ++y) mask |= row << (y * kCellSize);
+  return mask;
+}
+
 void DelayStreamTile::enter(const SetupTriangle& t) {
   TileEdges e;
-  if (!setupTileRect(t, box_.x0, box_.y0, box_.x1, box_.y1, e)) return;
-  // Only cells whose every pixel (within the image) lies in the triangle's box can be covered:
-  // most triangles of a dense mesh span none, and are done before their edges are set up.
-  auto first = [](int lo, int origin) { return (lo - origin + kCellSize - 1) >> kOcclusionCellLevel; };
-  auto last = [](int hi, int origin, int box_hi) {
-    return hi == box_hi ? (hi - origin) >> kOcclusionCellLevel
-                        : ((hi - origin + 1) >> kOcclusionCellLevel) - 1;
-  };
-  const int cx0 = first(e.x0, box_.x0), cx1 = last(e.x1, box_.x0, box_.x1);
-  const int cy0 = first(e.y0, box_.y0), cy1 = last(e.y1, box_.y0, box_.y1);
-  if (cx0 > cx1 || cy0 > cy1) return;
-  if (!setupRectEdges(t, e)) return;
-  for (int cy = cy0; cy <= cy1; ++cy)
-    for (int cx = cx0; cx <= cx1; ++cx) {
-      const TileEdges cell = cellRect(e, cx, cy);
-      // The kernels' own inside test at every pixel of the cell (cull_tiles.h); the box's
-      // right and bottom edges are the image's where the tile is cut by it.
-      if (!coversCell(cell, kOcclusionCellLevel, box_.x1 + 1, box_.y1 + 1)) continue;
-      // Every depth the kernel draws in the cell is at least `lo`: each pixel of the cell ends
-      // at least that close, whatever else is drawn there (reversed-Z: larger is closer).
-      const double lo = planeDepthRange(t, cell).lo;
-      float bound = float(lo);
-      if (double(bound) > lo) bound = std::nextafter(bound, -std::numeric_limits<float>::infinity());
-      float& occluded = occluded_[cy * kCellsPerRow + cx];
-      occluded = std::max(occluded, bound);
+  if (!setupTileEdges(t, box_.x0, box_.y0, box_.x1, box_.y1, e)) return;
+  const double vertex_farthest = vertexDepthRange(t).lo;
+  for (int cy = (e.y0 - box_.y0) >> kOcclusionCellLevel;
+       cy <= (e.y1 - box_.y0) >> kOcclusionCellLevel; ++cy)
+    for (int cx = (e.x0 - box_.x0) >> kOcclusionCellLevel;
+         cx <= (e.x1 - box_.x0) >> kOcclusionCellLevel; ++cx) {
+      // Every depth the kernel draws at the triangle's pixels of the cell is at least
+      // `farthest`: those pixels end at least that close, whatever else is drawn there
+      // (reversed-Z: larger is closer).
+      const double lo =
+          std::max(planeDepthRange(t, cellRect(e, cx, cy)).lo, vertex_farthest);
+      float farthest = float(lo);
+      if (double(farthest) > lo)
+        farthest = std::nextafter(farthest, -std::numeric_limits<float>::infinity());
+      const int i = cy * kCellsPerRow + cx;
+      if (farthest <= occluded_[i]) continue;  // it cannot raise the bound
+      // The kernels' own inside test (their int32 edge values) at each pixel of the cell.
+      const uint64_t covered = coverage(e, cx, cy);
+      if (covered == 0) continue;
+      const uint64_t full = cellPixels(cx, cy);
+      if ((covered & full) == full) {
+        occluded_[i] = farthest;
+        if (layer_farthest_[i] <= farthest) {
+          layer_[i] = 0;
+          layer_farthest_[i] = std::numeric_limits<float>::infinity();
+        }
+        continue;
+      }
+      // Triangles that each cover part of the cell add up: once their pixels fill it, it ends
+      // at least as close as the farthest of them (one coverage layer per cell, in the manner
+      // of masked depth culling; the thesis' unit A takes whole covers only). The layer is
+      // kept useful: a triangle much nearer than the layer starts a new one, a triangle much
+      // farther, which would drag the layer down towards the bound, is left out. Which
+      // triangles join only decides how much is culled, never a pixel.
+      float& layer_far = layer_farthest_[i];
+      const float bound = occluded_[i];
+      if (layer_[i] == 0) {
+        layer_[i] = covered;
+        layer_far = farthest;
+      } else if (farthest >= layer_far) {
+        if (layer_far - bound < farthest - layer_far) {
+          layer_[i] = covered;
+          layer_far = farthest;
+        } else {
+          layer_[i] |= covered;
+        }
+      } else if (farthest - bound >= layer_far - farthest) {
+        layer_[i] |= covered;
+        layer_far = farthest;
+      }
+      if ((layer_[i] & full) == full) {
+        occluded_[i] = std::max(occluded_[i], layer_far);
+        layer_[i] = 0;
+        layer_farthest_[i] = std::numeric_limits<float>::infinity();
+      }
     }
 }
 

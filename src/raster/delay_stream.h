@@ -3,8 +3,9 @@
 // eye pass's triangles pass through a ring buffer of a given byte size on their way to the
 // pixels. When a triangle enters the ring its certain low-resolution depth information is
 // entered into an occlusion buffer: per 8x8-pixel cell, the farthest depth the cell can still
-// hold, raised only where the triangle covers the whole cell (the thesis' conservative z-max
-// of unit A). When it leaves the ring, the buffer already knows the triangles submitted after
+// hold (the thesis' conservative z-max of unit A), raised only where entered triangles cover
+// the whole cell: one triangle alone, or several whose pixels together fill it, each of their
+// depths there counted at its farthest. When it leaves the ring, the buffer already knows the triangles submitted after
 // it that the ring held, and the triangle is tested against it and against the depth drawn so
 // far in the cell (the early z-max test of unit B): where it lies strictly behind in every cell
 // it reaches, it is culled before any pixel. Only strictly hidden triangles go, so every depth
@@ -68,6 +69,10 @@ class DelayStreamTile {
   static constexpr int kCells = kCellsPerRow * kCellsPerRow;
 
   void enter(const SetupTriangle& t);
+  // The pixels of cell (cx, cy) inside the triangle with edges `e` (bit 8 * row + column).
+  uint64_t coverage(const TileEdges& e, int cx, int cy) const;
+  // The bits of cell (cx, cy)'s pixels inside the image.
+  uint64_t cellPixels(int cx, int cy) const;
   // The farthest depth drawn in cell i so far (background 0), recomputed when it changed.
   float drawnFarthest(int i, const float* depth);
   // The rect `e` restricted to cell (cx, cy) of the tile.
@@ -79,6 +84,10 @@ class DelayStreamTile {
   TileBox box_;
   size_t ring_;
   float occluded_[kCells] = {};  // no pixel of the cell will end farther (entered triangles)
+  // Pixels of the cell that entered triangles cover, not filling it yet, and the farthest of
+  // those triangles' depths there.
+  uint64_t layer_[kCells] = {};
+  float layer_farthest_[kCells];
   float drawn_farthest_[kCells] = {};
   bool changed_[kCells] = {};
 };
