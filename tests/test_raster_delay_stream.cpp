@@ -205,6 +205,28 @@ TEST(DelayStream, OffCountsNothingNew) {
   EXPECT_EQ(delayStreamTriangles(2 * kDelayStreamTriangleBytes + 1), 2u);
 }
 
+// Every small built-in scene through the eye pass (each technique's input), at rings of one
+// triangle and 64 KB: the same buffers.
+TEST(DelayStream, EyePassOfEveryBuiltInSceneIsUnchanged) {
+  for (const char* name : {"spheres", "columns", "fractal", "year2002", "multilight"}) {
+    const Scene scene = builtinScene(name);
+    const View view = scene.camera.makeView(200, 130);
+    Stats plain_stats;
+    const EyeBuffers plain = renderEyePass(scene, view, plain_stats, true);
+    for (const size_t bytes : {size_t(1), size_t(64) << 10}) {
+      Stats stats;
+      const EyeBuffers delayed =
+          renderEyePass(scene, view, stats, DepthPassOptions{.delay_stream_bytes = bytes});
+      EXPECT_TRUE(plain.depth.depth == delayed.depth.depth) << name << " " << bytes;
+      EXPECT_TRUE(plain.primitive == delayed.primitive) << name << " " << bytes;
+      for (int level = kMinTileLevel; level <= kMaxTileLevel; ++level) {
+        EXPECT_TRUE(plain.depth.tileRange(level).zmin == delayed.depth.tileRange(level).zmin);
+        EXPECT_TRUE(plain.depth.tileRange(level).zmax == delayed.depth.tileRange(level).zmax);
+      }
+    }
+  }
+}
+
 // A built-in scene through the eye pass: same buffers with the stream as without.
 TEST(DelayStream, EyePassOfABuiltInSceneIsUnchanged) {
   const Scene scene = builtinScene("city:1");
