@@ -55,7 +55,7 @@ uint64_t DelayStreamTile::coverage(const TileEdges& e, int cx, int cy) const {
 uint64_t DelayStreamTile::cellPixels(int cx, int cy) const {
   const int w = std::min(kCellSize, box_.x1 - (box_.x0 + cx * kCellSize) + 1);
   const int h = std::min(kCellSize, box_.y1 - (box_.y0 + cy * kCellSize) + 1);
-  const uint64_t row = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
+  const uint64_t row = (uint64_t(1) << w) - 1;
   uint64_t mask = 0;
   for (int y = 0; y < h; ++y) mask |= row << (y * kCellSize);
   return mask;

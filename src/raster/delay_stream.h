@@ -5,12 +5,12 @@
 // entered into an occlusion buffer: per 8x8-pixel cell, the farthest depth the cell can still
 // hold (the thesis' conservative z-max of unit A), raised only where entered triangles cover
 // the whole cell: one triangle alone, or several whose pixels together fill it, each of their
-// depths there counted at its farthest. When it leaves the ring, the buffer already knows the triangles submitted after
-// it that the ring held, and the triangle is tested against it and against the depth drawn so
-// far in the cell (the early z-max test of unit B): where it lies strictly behind in every cell
-// it reaches, it is culled before any pixel. Only strictly hidden triangles go, so every depth
-// and primitive id of the frame is what the plain pass draws (ties keep the earlier triangle,
-// as the depth kernel does).
+// depths there counted at its farthest. When the triangle leaves the ring, the buffer already
+// knows the triangles submitted after it that the ring held, and the triangle is tested
+// against it and against the depth drawn so far in the cell (the early z-max test of unit B):
+// where it lies strictly behind in every cell it reaches, it is culled before any pixel. Only
+// strictly hidden triangles go, so every depth and primitive id of the frame is what the plain
+// pass draws (ties keep the earlier triangle, as the depth kernel does).
 //
 // The rasterizer is sort-middle (binning.h): each bin tile draws its triangles in submission
 // order, and the cells of a bin tile only ever learn from the triangles binned to it. So the
