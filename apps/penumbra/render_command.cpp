@@ -50,6 +50,8 @@ struct RenderArgs {
   // than the fourth): three untimed frames reach the steady state, as the llvmpipe peer's do.
   int warmup = 3;
   bool scalar = false;
+  long long delay_stream = 0;      // bytes of the eye pass's delay stream; 0: none
+  bool depth_complexity = false;  // count the eye pass's depth passes and covered pixels
   std::string visibility_exr;
   std::string visibility_png;
   std::string depth_exr;
@@ -173,6 +175,8 @@ int runRender(const RenderArgs& args) {
   options.context.simd = !args.scalar;
   options.context.show_progress = !args.quiet;
   options.context.threads = args.threads;
+  options.delay_stream_bytes = size_t(args.delay_stream);
+  options.depth_complexity = args.depth_complexity;
   options.width = args.width;
   options.height = args.height;
   requireExtension(args.output, ".png", "output");
@@ -265,6 +269,14 @@ Subcommand addRenderCommand(CLI::App& app) {
       ->check(wholeNumberIn(0, 4096))
       ->capture_default_str();
   cmd->add_flag("--scalar", args->scalar, "Run the scalar twins of the SIMD kernels");
+  cmd->add_option("--delay-stream", args->delay_stream,
+                  "Ring buffer bytes of the eye pass's delay stream (delayed occlusion culling; "
+                  "0: none). The image is the same; fewer eye-pass pixels are rasterized")
+      ->check(wholeNumberIn(0, 1LL << 34))
+      ->capture_default_str();
+  cmd->add_flag("--depth-complexity", args->depth_complexity,
+                "Count the eye pass's depth passes and covered pixels (eye_depth_passes, "
+                "eye_covered_pixels in --stats)");
   cmd->add_option("--frames", args->frames,
                   "Time N warm frames (technique prepared once) and print min / median / max "
                   "and each pass's median; outputs are the last frame's")

@@ -10,6 +10,11 @@
 namespace penumbra {
 
 EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, bool simd) {
+  return renderEyePass(scene, view, stats, DepthPassOptions{.simd = simd});
+}
+
+EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats,
+                         const DepthPassOptions& options) {
   PassTimer timer(stats, "eye");
   ClipTriangles tris;
   tris.clip.resize(scene.meshes.empty() ? 0 : [&] {
@@ -55,7 +60,7 @@ EyeBuffers renderEyePass(const Scene& scene, const View& view, Stats& stats, boo
   // rasterizeDepth writes every pixel, background included.
   eye.depth.depth.resizeForOverwrite(view.width, view.height);
   eye.primitive.resizeForOverwrite(view.width, view.height);
-  rasterizeDepth(tris, eye.depth, eye.primitive, stats, simd);  // tile ranges included
+  rasterizeDepth(tris, eye.depth, eye.primitive, stats, options);  // tile ranges included
   eye.clip_vertices = std::move(tris.clip);
   return eye;
 }

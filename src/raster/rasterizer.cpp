@@ -9,7 +9,10 @@
 #include "core/parallel.h"
 #include "raster/binning.h"
 #include "raster/cull_tiles.h"
+#include "raster/delay_stream.h"
+#include "raster/depth_pass.h"
 #include "raster/fixed_point.h"
+#include "raster/plane_depth_range.h"
 #include "raster/tile_copy.h"
 #include "raster/tile_kernels.h"
 #include "raster/tile_offsets.h"
@@ -21,6 +24,8 @@ struct TileCounts {
   KernelCounts kernel;
   CullTally tally;
   uint64_t accepted = 0;  // culling tiles whose polygon went to the coarse level
+  uint64_t delay_culled = 0;  // depth pass: pairs the delay stream culled
+  uint64_t covered = 0;       // depth pass: pixels with a triangle once the tile is drawn
 };
 
 TileBox tileBox(const TileBins& bins, size_t tile, int width, int height) {
@@ -40,21 +45,13 @@ void sumInto(const std::vector<TileCounts>& tiles, Stats& stats, bool writes_are
   }
 }
 
-// The plane's extremes over the rect's pixel centres, widened by the float error of the kernels'
-// evaluation (tile_kernels.h: TileEdges), so a decision taken on them never changes a pixel.
-struct DepthBounds {
-  double lo, hi;
-};
-
-DepthBounds depthBounds(const SetupTriangle& t, const TileEdges& e) {
-  // At the first corner plus each step across the rect taken where it lowers (raises) the depth.
-  const double c00 = t.a * (e.x0 + 0.5) + t.b * (e.y0 + 0.5) + t.c;
-  const double across = t.a * (e.x1 - e.x0), down = t.b * (e.y1 - e.y0);
-  const double error = 8.0 * FLT_EPSILON *
-                       (std::fabs(e.dc) + kBinTileSize * (std::fabs(e.da) + std::fabs(e.db))) +
-                       1e-30;
-  return {c00 + std::min(across, 0.0) + std::min(down, 0.0) - error,
-          c00 + std::max(across, 0.0) + std::max(down, 0.0) + error};
+// The pixels of the tile's box that a triangle covers (an id other than kNoPrimitive).
+uint64_t countCovered(const uint32_t* primitive, const TileBox& box) {
+  uint64_t covered = 0;
+  for (int y = 0; y <= box.y1 - box.y0; ++y)
+    for (int x = 0; x <= box.x1 - box.x0; ++x)
+      covered += primitive[y * kBinTileSize + x] != kNoPrimitive;
+  return covered;
 }
 
 }  // namespace
@@ -62,7 +59,7 @@ DepthBounds depthBounds(const SetupTriangle& t, const TileEdges& e) {
 DepthRuleTiles depthRuleTiles(const SetupTriangle& t, const TileEdges& e, bool zfail, float zmin,
                               float zmax, bool find_all) {
   if (zmax <= 0.0f) return DepthRuleTiles::None;  // only background: nothing to shadow
-  const DepthBounds b = depthBounds(t, e);
+  const PlaneDepthRange b = planeDepthRange(t, e);
   if (zfail) {
     if (b.lo > double(zmax)) return DepthRuleTiles::None;  // entirely in front of every pixel
     // Behind or at every pixel, none of them background.
@@ -80,13 +77,15 @@ namespace {
 // rasterizeDepth, and with `ranges` (whose depth image is `depth`) its tile ranges from each
 // bin tile's copy before it is stored.
 void drawDepth(const ClipTriangles& triangles, Image<float>& depth, Image<uint32_t>& primitive,
-               Stats& stats, bool simd, DepthBuffer* ranges) {
+               Stats& stats, const DepthPassOptions& options, DepthBuffer* ranges) {
   const int width = depth.width(), height = depth.height();
   PENUMBRA_CHECK(primitive.width() == width && primitive.height() == height,
                  "primitive ids {}x{} do not match depth {}x{}", primitive.width(),
                  primitive.height(), width, height);
   const std::vector<SetupTriangle> setup = setupTriangles(triangles, width, height);
   const TileBins bins = binTriangles(setup, width, height);
+  const size_t ring = delayStreamTriangles(options.delay_stream_bytes);
+  const bool depth_complexity = options.depth_complexity || ring > 0;
   std::vector<TileCounts> counts(bins.tileCount());
   parallelFor(bins.tileCount(), [&](size_t tile) {
     const TileBox box = tileBox(bins, tile, width, height);
@@ -104,19 +103,28 @@ void drawDepth(const ClipTriangles& triangles, Image<float>& depth, Image<uint32
     DepthTarget target{tile_depth.data(), tile_primitive.data(), kBinTileSize};
     target.x0 = box.x0;
     target.y0 = box.y0;
-    const uint32_t end = bins.offsets[tile + 1];
-    for (uint32_t k = bins.offsets[tile]; k < end; ++k) {
-      if (k + kBinLookahead < end)
-        prefetchSetupTriangle(setup[bins.triangles[k + kBinLookahead]]);
-      const SetupTriangle& t = setup[bins.triangles[k]];
+    const uint32_t* first = bins.triangles.data() + bins.offsets[tile];
+    const uint32_t* end = bins.triangles.data() + bins.offsets[tile + 1];
+    std::optional<DelayStreamTile> delay;
+    if (ring > 0) delay.emplace(setup, first, end, box, ring);
+    for (const uint32_t* k = first; k != end; ++k) {
+      if (k + kBinLookahead < end) prefetchSetupTriangle(setup[k[kBinLookahead]]);
+      const SetupTriangle& t = setup[*k];
       TileEdges e;
       ++c.tally.tested;
       if (!setupTileEdges(t, box.x0, box.y0, box.x1, box.y1, e)) {
         ++c.tally.culled;
         continue;
       }
-      depthKernel(e, uint32_t(t.payload), target, c.kernel, simd);
+      if (delay && delay->hidden(k, e, tile_depth.data())) {
+        ++c.tally.culled;
+        ++c.delay_culled;
+        continue;
+      }
+      depthKernel(e, uint32_t(t.payload), target, c.kernel, options.simd);
+      if (delay) delay->drawn(e);
     }
+    if (depth_complexity) c.covered = countCovered(tile_primitive.data(), box);
     if (ranges != nullptr)
       ranges->setBinTileRanges(tile_depth.data(), kBinTileSize, box.x0, box.y0, box.x1, box.y1);
     tile_depth.storeTo(depth, box);
@@ -125,20 +133,40 @@ void drawDepth(const ClipTriangles& triangles, Image<float>& depth, Image<uint32
   if (ranges != nullptr) ranges->finishTileRanges();
   sumInto(counts, stats, false);
   stats.triangles += setup.size();
+  if (ring > 0) {
+    stats.count(kDelayRingTriangles, ring);
+    uint64_t culled = 0;
+    for (const TileCounts& c : counts) culled += c.delay_culled;
+    stats.count(kDelayCulledPairs, culled);
+  }
+  if (depth_complexity) {
+    uint64_t passes = 0, covered = 0;
+    for (const TileCounts& c : counts) {
+      passes += c.kernel.writes;
+      covered += c.covered;
+    }
+    stats.count(kEyeDepthPasses, passes);
+    stats.count(kEyeCoveredPixels, covered);
+  }
 }
 
 }  // namespace
 
 void rasterizeDepth(const ClipTriangles& triangles, Image<float>& depth,
                     Image<uint32_t>& primitive, Stats& stats, bool simd) {
-  drawDepth(triangles, depth, primitive, stats, simd, nullptr);
+  drawDepth(triangles, depth, primitive, stats, DepthPassOptions{.simd = simd}, nullptr);
 }
 
 void rasterizeDepth(const ClipTriangles& triangles, DepthBuffer& depth,
                     Image<uint32_t>& primitive, Stats& stats, bool simd) {
+  rasterizeDepth(triangles, depth, primitive, stats, DepthPassOptions{.simd = simd});
+}
+
+void rasterizeDepth(const ClipTriangles& triangles, DepthBuffer& depth,
+                    Image<uint32_t>& primitive, Stats& stats, const DepthPassOptions& options) {
   // Sized first: drawDepth checks the sizes, and the tiles' ranges are written in place.
   depth.allocateTileRanges();
-  drawDepth(triangles, depth.depth, primitive, stats, simd, &depth);
+  drawDepth(triangles, depth.depth, primitive, stats, options, &depth);
 }
 
 void rasterizeStencil(const ClipTriangles& triangles, const DepthBuffer& depth,

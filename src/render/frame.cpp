@@ -36,7 +36,10 @@ void FrameRenderer::render(FrameResult& frame) const {
   // kept and overwritten (shadeFrameInto).
   frame.eye = EyeBuffers{};
   frame.lights.clear();
-  frame.eye = renderEyePass(scene_, frame.view, frame.eye_stats, context.simd);
+  frame.eye = renderEyePass(scene_, frame.view, frame.eye_stats,
+                            DepthPassOptions{.simd = context.simd,
+                                             .delay_stream_bytes = options_.delay_stream_bytes,
+                                             .depth_complexity = options_.depth_complexity});
   frame.total.add(frame.eye_stats);
   frame.lights.reserve(scene_.lights.size());
   for (const Light& light : scene_.lights) {

@@ -1,5 +1,6 @@
 #pragma once
 // One frame: the eye pass, a shadow technique per light, shading (README, Architecture).
+#include <cstddef>
 #include <memory>
 #include <vector>
 
@@ -17,6 +18,13 @@ struct FrameOptions {
   int width = 0;              // 0: the scene's settings
   int height = 0;
   RenderContext context;      // threads, SIMD, progress: every pass obeys them
+  // The eye pass's delay stream (delayed occlusion culling, Aila's 2005 thesis, section 5.1):
+  // its ring in bytes, 0 for none. The eye buffers are the same with any ring; only the work
+  // and the eye pass's counters change (docs/reproducing-visibility.md).
+  size_t delay_stream_bytes = 0;
+  // Count the eye pass's depth complexity (eye_depth_passes, eye_covered_pixels); always
+  // counted with a delay stream.
+  bool depth_complexity = false;
 };
 
 struct FrameResult {
