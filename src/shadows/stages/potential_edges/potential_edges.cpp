@@ -83,21 +83,21 @@ PlaneCluster boundPlanes(const Mesh& mesh, const std::vector<dvec4>& planes,
   const double length = glm::length(sum);
   if (!(length > 0.0) || !std::isfinite(length)) return cluster;
   cluster.axis = sum / length;
+  cluster.centre = (lo + hi) * 0.5;
+  // The box holds every vertex: none lies farther from its centre than half its diagonal.
+  cluster.vertex_reach = 0.5 * glm::length(hi - lo);
   double cos_min = 1.0;
-  for (const uint32_t t : ids) cos_min = std::min(cos_min, glm::dot(cluster.axis, dvec3(planes[t])));
+  for (const uint32_t t : ids) {
+    const dvec4& plane = planes[t];
+    cos_min = std::min(cos_min, glm::dot(cluster.axis, dvec3(plane)));
+    cluster.plane_reach = std::max(
+        cluster.plane_reach, std::fabs(glm::dot(dvec3(plane), cluster.centre) + plane.w));
+  }
   // Widened past the rounding of the dot products and of acos near 0.
   const double half = std::acos(std::clamp(cos_min - 1e-12, -1.0, 1.0)) + 1e-7;
   if (!(half < 1.5)) return cluster;  // about a hemisphere: nothing to decide
   cluster.cos_half = std::cos(half);
   cluster.sin_half = std::sin(half);
-  cluster.centre = (lo + hi) * 0.5;
-  for (const uint32_t t : ids) {
-    const dvec4& plane = planes[t];
-    cluster.plane_reach = std::max(
-        cluster.plane_reach, std::fabs(glm::dot(dvec3(plane), cluster.centre) + plane.w));
-    cluster.vertex_reach =
-        std::max(cluster.vertex_reach, glm::length(dvec3(mesh.vertex(t, 0)) - cluster.centre));
-  }
   cluster.usable = std::isfinite(cluster.plane_reach) && std::isfinite(cluster.vertex_reach);
   return cluster;
 }

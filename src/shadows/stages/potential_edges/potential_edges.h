@@ -91,7 +91,7 @@ struct PotentialEdges {
 // centre lies on the same side of every plane, farther from each than the "cuts the ball" test
 // reaches (Laine et al. 2005, section 4: the potential silhouette edges found "hierarchically";
 // here a flat list of clusters). Every unit normal lies within `half_angle` of `axis`, and
-// every plane passes within `plane_reach` of `centre`; the triangles' first vertices lie within
+// every plane passes within `plane_reach` of `centre`; the triangles' vertices lie within
 // `vertex_reach` of it. Not `usable` when a triangle has no area, the normals spread over a
 // hemisphere or more, or (edge clusters) an edge is not one of two triangles wound opposite ways.
 struct PlaneCluster {
