@@ -118,10 +118,11 @@ std::vector<PlaneCluster> edgeClusters(const Mesh& mesh, const EdgeAdjacency& ad
       ids.clear();
       const size_t last = std::min(adjacency.edges.size(), (k + 1) * kEdgesPerCluster);
       bool simple = true;
-      for (size_t i = k * kEdgesPerCluster; i < last && simple; ++i) {
+      for (size_t i = k * kEdgesPerCluster; i < last; ++i) {
         const Edge& edge = adjacency.edges[i];
         simple = edge.use_count == 2 &&
                  winding[edge.first_use] == -winding[edge.first_use + 1];
+        if (!simple) break;
         ids.push_back(adjacency.uses[edge.first_use].triangle);
         ids.push_back(adjacency.uses[edge.first_use + 1].triangle);
       }
