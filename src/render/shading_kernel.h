@@ -61,29 +61,38 @@ struct ShadingFrame {
   vec3 background{0.0f};
 };
 
-// The frame's triangle records, indexed by global triangle id, each built the first time a
-// pixel shows its triangle by whichever worker gets there first: a record is a function of the
-// id alone, so which worker builds it changes no result. Memory is reserved for every triangle
-// of the scene but touched only for the visible ones.
+// The frame's triangle records, each built the first time a pixel shows its triangle by
+// whichever worker gets there first: a record is a function of the id alone, so which worker
+// builds it, and where it is stored, changes no result. Records are stored one after the other
+// in the order they are first asked for, a slot per global triangle id saying where: memory is
+// reserved for every triangle of the scene but touched only for the visible ones, and those
+// are packed, so a first frame faults in the pages its visible triangles fill rather than one
+// page per visible triangle of a dense mesh (records indexed by id, 120 bytes each, left most
+// of a 4 KiB page unused).
 class ShadingTriangleTable {
  public:
   explicit ShadingTriangleTable(const Scene& scene);
   // The record of triangle `id`; `scratch` receives it when another worker is building it at
   // this moment. Throws penumbra::Error for an id outside the scene.
   const ShadingTriangle& get(uint32_t id, ShadingTriangle& scratch) {
-    if (id < count_ && state_[id].load(std::memory_order_acquire) == kReady) return records_[id];
+    if (id < count_) {
+      const uint32_t slot = slots_[id].load(std::memory_order_acquire);
+      if (slot >= kFirstRecord) return records_[slot - kFirstRecord];
+    }
     return getSlow(id, scratch);
   }
 
  private:
-  static constexpr uint8_t kEmpty = 0, kBuilding = 1, kReady = 2;
+  // A slot: kEmpty, kBuilding, or kFirstRecord + the record's place in records_.
+  static constexpr uint32_t kEmpty = 0, kBuilding = 1, kFirstRecord = 2;
   const ShadingTriangle& getSlow(uint32_t id, ShadingTriangle& scratch);
   void build(uint32_t id, ShadingTriangle& t) const;
 
   const Scene& scene_;
   uint64_t count_;
-  std::unique_ptr<std::atomic<uint8_t>[]> state_;  // zero-initialised: kEmpty
-  std::unique_ptr<ShadingTriangle[]> records_;
+  std::unique_ptr<std::atomic<uint32_t>[]> slots_;  // zero-initialised: kEmpty
+  std::atomic<uint32_t> used_{0};                   // records built
+  std::unique_ptr<ShadingTriangle[]> records_;      // the first used_ are built
 };
 
 // Shades row y into out[0, width): every pixel is written, background included.

@@ -2,6 +2,7 @@
 // triangle records both read.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/error.h"
 #include "raster/depth_buffer.h"
@@ -31,18 +32,23 @@ float specularPower(float n_dot_h, const ShadingTriangle& t) {
 ShadingTriangleTable::ShadingTriangleTable(const Scene& scene)
     : scene_(scene),
       count_(scene.triangle_offsets.empty() ? 0 : scene.triangle_offsets.back()),
-      state_(new std::atomic<uint8_t>[count_]),
-      records_(new ShadingTriangle[count_]) {}
+      slots_(new std::atomic<uint32_t>[count_]),
+      records_(new ShadingTriangle[count_]) {
+  // Global triangle ids are 32-bit (EyeBuffers::primitive): a slot holds any record's place.
+  PENUMBRA_CHECK(count_ < uint64_t(UINT32_MAX) - kFirstRecord,
+                 "shading: {} triangles are more than the table can number", count_);
+}
 
 const ShadingTriangle& ShadingTriangleTable::getSlow(uint32_t id, ShadingTriangle& scratch) {
   PENUMBRA_CHECK(id < count_, "shading: a pixel names triangle {} of {}", id, count_);
-  uint8_t state = kEmpty;
-  if (state_[id].compare_exchange_strong(state, kBuilding, std::memory_order_acquire)) {
-    build(id, records_[id]);
-    state_[id].store(kReady, std::memory_order_release);
-    return records_[id];
+  uint32_t slot = kEmpty;
+  if (slots_[id].compare_exchange_strong(slot, kBuilding, std::memory_order_acquire)) {
+    const uint32_t place = used_.fetch_add(1, std::memory_order_relaxed);
+    build(id, records_[place]);
+    slots_[id].store(kFirstRecord + place, std::memory_order_release);
+    return records_[place];
   }
-  if (state == kReady) return records_[id];
+  if (slot >= kFirstRecord) return records_[slot - kFirstRecord];
   build(id, scratch);  // another worker is building it: build a private copy meanwhile
   return scratch;
 }

@@ -84,14 +84,48 @@ struct PotentialEdges {
   std::vector<EdgeTriangle> triangles;
   std::vector<CuttingTriangle> cutting;
   size_t scene_edges = 0;  // edges of the scene's meshes, for the ratio
+  size_t skipped_edges = 0;  // of those, in clusters skipped whole (EdgeGeometry)
 };
 
+// Bounds over the planes of a cluster of triangles, so that one test can tell that the light
+// centre lies on the same side of every plane, farther from each than the "cuts the ball" test
+// reaches (Laine et al. 2005, section 4: the potential silhouette edges found "hierarchically";
+// here a flat list of clusters). Every unit normal lies within `half_angle` of `axis`, and
+// every plane passes within `plane_reach` of `centre`; the triangles' vertices lie within
+// `vertex_reach` of it. Not `usable` when a triangle has no area, the normals spread over a
+// hemisphere or more, or (edge clusters) an edge is not one of two triangles wound opposite ways.
+struct PlaneCluster {
+  dvec3 axis{0.0};
+  double cos_half = -1.0, sin_half = 0.0;
+  dvec3 centre{0.0};
+  double plane_reach = 0.0, vertex_reach = 0.0;
+  bool usable = false;
+};
+
+// +1 when every plane of the cluster has the light centre c on its positive side and the ball
+// (c, r) does not reach it (with the slack potentialEdges gives that test, and a margin far
+// above the rounding of either test), -1 when every plane has it on its negative side so, 0 when
+// the bounds cannot tell.
+int clusterSide(const PlaneCluster& cluster, const dvec3& c, double r);
+
+// Clusters: consecutive edges (EdgeAdjacency's order: sorted by the smaller vertex index, so
+// neighbours on a scanned mesh) or consecutive triangles.
+inline constexpr size_t kEdgesPerCluster = 16;
+inline constexpr size_t kTrianglesPerCluster = 16;
+
 // What potentialEdges needs of the scene whatever the light, built once per scene: every
-// triangle's plane (unit normal and offset; all 0 for a triangle of zero area) and, per edge use
-// (EdgeAdjacency::uses), the triangle's winding along the edge (EdgeTriangle).
+// triangle's plane (unit normal and offset; all 0 for a triangle of zero area), per edge use
+// (EdgeAdjacency::uses) the triangle's winding along the edge (EdgeTriangle), and the clusters'
+// bounds. A cluster of edges whose triangles the light sees all from the front, or all from
+// the back, holds no potential silhouette edge (two triangles wound opposite ways with the
+// centre on the same side of both, neither plane cutting the ball): potentialEdges skips its
+// edges without visiting them; a cluster of triangles so, the per-triangle plane tests.
+// Empty cluster lists: every edge and triangle is visited (the same result, tests compare).
 struct EdgeGeometry {
   std::vector<std::vector<dvec4>> planes;    // per mesh, per triangle
   std::vector<std::vector<int8_t>> winding;  // per mesh, per edge use
+  std::vector<std::vector<PlaneCluster>> edge_clusters;      // per mesh, kEdgesPerCluster each
+  std::vector<std::vector<PlaneCluster>> triangle_clusters;  // per mesh, kTrianglesPerCluster
 };
 EdgeGeometry edgeGeometry(const Scene& scene);
 
