@@ -50,6 +50,7 @@ struct RenderArgs {
   // than the fourth): three untimed frames reach the steady state, as the llvmpipe peer's do.
   int warmup = 3;
   bool scalar = false;
+  std::string caster_culling = "on";
   std::string visibility_exr;
   std::string visibility_png;
   std::string depth_exr;
@@ -171,6 +172,7 @@ int runRender(const RenderArgs& args) {
   }
   options.technique.validate();
   options.context.simd = !args.scalar;
+  options.context.caster_culling = args.caster_culling == "on";
   options.context.show_progress = !args.quiet;
   options.context.threads = args.threads;
   options.width = args.width;
@@ -265,6 +267,11 @@ Subcommand addRenderCommand(CLI::App& app) {
       ->check(wholeNumberIn(0, 4096))
       ->capture_default_str();
   cmd->add_flag("--scalar", args->scalar, "Run the scalar twins of the SIMD kernels");
+  cmd->add_option("--caster-culling", args->caster_culling,
+                  "Leave out of the shadow volumes, wedges and potential edges the casters "
+                  "whose shadow reaches no visible point (same image; docs/caster-culling.md)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd->add_option("--frames", args->frames,
                   "Time N warm frames (technique prepared once) and print min / median / max "
                   "and each pass's median; outputs are the last frame's")
