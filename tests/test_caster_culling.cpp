@@ -22,16 +22,33 @@ namespace penumbra {
 namespace test_caster_culling {
 
 // Every technique that goes through the shared silhouette, volume, potential-edge or stencil
-// stages (the shadow maps, the oracle and alias-free do not).
-const std::vector<std::string> kCullingTechniques = {
-    "volume",     "hierarchical-volume", "depth-bounds-volume", "wedge-2002", "wedge-3pass",
-    "wedge-1pass", "coverage",           "exact",               "heckbert-herf", "mask-alpha",
-    "mask-colour"};
+// stages (the shadow maps, the oracle and alias-free do not), and the options that change which
+// volumes are drawn: z-pass forced (a volume holding the eye counts at every pixel, so such a
+// caster must never be culled), z-fail forced, and the masks' own low-resolution depth pass.
+struct CullingCase {
+  std::string technique;
+  std::vector<std::pair<std::string, std::string>> options{};
+};
+const std::vector<CullingCase> kCullingCases = {
+    {"volume"},
+    {"volume", {{"volume-mode", "zpass"}}},
+    {"volume", {{"volume-mode", "zfail"}}},
+    {"hierarchical-volume"},
+    {"depth-bounds-volume"},
+    {"wedge-2002"},
+    {"wedge-3pass"},
+    {"wedge-1pass", {{"volume-mode", "zfail"}}},
+    {"coverage"},
+    {"exact"},
+    {"heckbert-herf"},
+    {"mask-alpha"},
+    {"mask-colour", {{"mask-scale", "2"}}}};
 
-FrameResult render(const Scene& scene, const std::string& technique, bool culling, int width,
+FrameResult render(const Scene& scene, const CullingCase& technique, bool culling, int width,
                    int height) {
   FrameOptions options;
-  options.technique = TechniqueConfig(technique);
+  options.technique = TechniqueConfig(technique.technique);
+  for (const auto& [option, value] : technique.options) options.technique.set(option, value);
   options.width = width;
   options.height = height;
   options.context.caster_culling = culling;
@@ -54,18 +71,22 @@ uint64_t culledCasters(const FrameResult& frame) {
 uint64_t expectSameFrames(const Scene& scene, const std::string& what, int width = 96,
                           int height = 64) {
   uint64_t culled = 0;
-  for (const std::string& technique : kCullingTechniques) {
+  for (const CullingCase& culling_case : kCullingCases) {
+    std::string technique = culling_case.technique;
+    for (const auto& [option, value] : culling_case.options)
+      technique += " --" + option + " " + value;
     FrameResult off, on;
     try {
-      off = render(scene, technique, false, width, height);
+      off = render(scene, culling_case, false, width, height);
     } catch (const Error&) {
       // A technique that refuses the scene (the wedges take only spherical lights) must refuse
       // it the same way with culling on.
-      EXPECT_THROW(render(scene, technique, true, width, height), Error) << what << technique;
+      EXPECT_THROW(render(scene, culling_case, true, width, height), Error)
+          << what << ", " << technique;
       continue;
     }
-    on = render(scene, technique, true, width, height);
-    EXPECT_EQ(on.lights.size(), off.lights.size()) << what << technique;
+    on = render(scene, culling_case, true, width, height);
+    EXPECT_EQ(on.lights.size(), off.lights.size()) << what << ", " << technique;
     if (on.lights.size() != off.lights.size()) continue;
     for (size_t l = 0; l < on.lights.size(); ++l) {
       // A difference means a culled caster did contribute at some visible point: the culling
@@ -76,7 +97,7 @@ uint64_t expectSameFrames(const Scene& scene, const std::string& what, int width
         EXPECT_TRUE(sameBits(on.lights[l].channels[c], off.lights[l].channels[c]))
             << what << ", " << technique << ", light " << l << ": channel " << c;
       // Off, nothing is tested or counted.
-      EXPECT_EQ(off.lights[l].stats.counter("casters_tested"), 0u) << what << technique;
+      EXPECT_EQ(off.lights[l].stats.counter("casters_tested"), 0u) << what << ", " << technique;
       EXPECT_EQ(on.lights[l].stats.counter("casters_tested"), scene.meshes.size())
           << what << ", " << technique;
     }
@@ -127,7 +148,7 @@ TEST(CasterCulling, CasterWhoseShadowIsOffScreenIsCulled) {
   scene.meshes.push_back(makeBox(vec3(30.0f, 0.0f, -1.0f), vec3(31.0f, 1.0f, 1.0f)));
   scene.finalize();
   for (const char* technique : {"volume", "exact", "hierarchical-volume"}) {
-    const FrameResult on = render(scene, technique, true, 64, 64);
+    const FrameResult on = render(scene, CullingCase{technique}, true, 64, 64);
     EXPECT_EQ(on.lights[0].stats.counter("casters_culled"), 1u) << technique;
     EXPECT_GT(on.lights[0].stats.counter("culled_caster_edges"), 0u) << technique;
   }
@@ -142,7 +163,7 @@ TEST(CasterCulling, OffScreenCasterShadowingVisibleGroundIsKept) {
   scene.meshes.push_back(makeBox(vec3(-1.0f, 8.0f, -1.0f), vec3(1.0f, 8.5f, 1.0f)));
   scene.finalize();
   for (const char* technique : {"volume", "exact", "wedge-3pass", "coverage"}) {
-    const FrameResult on = render(scene, technique, true, 64, 64);
+    const FrameResult on = render(scene, CullingCase{technique}, true, 64, 64);
     EXPECT_EQ(on.lights[0].stats.counter("casters_culled"), 0u) << technique;
     // The box is not on screen: no visible pixel is one of its triangles.
     const uint32_t first_box = scene.triangle_offsets[1];
@@ -175,7 +196,7 @@ TEST(CasterCulling, CasterHoldingTheLightIsKept) {
   scene.meshes.push_back(open);
   scene.finalize();
   for (const char* technique : {"volume", "exact", "coverage"}) {
-    const FrameResult on = render(scene, technique, true, 64, 64);
+    const FrameResult on = render(scene, CullingCase{technique}, true, 64, 64);
     EXPECT_EQ(on.lights[0].stats.counter("casters_culled"), 0u) << technique;
   }
   expectSameFrames(scene, "light inside a caster's box", 64, 64);
