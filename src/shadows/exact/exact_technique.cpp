@@ -753,6 +753,9 @@ void ExactSoftShadows::shadeTile(const LightPass& pass, size_t index, ExactScrat
                                  ExactTileWork& work) const {
   const EdgeBinTile bin =
       edgeBinTile(pass.bins, index, pass.eye.depth.width(), pass.eye.depth.height());
+  // The thread's scratch outlives the frame: a triangle id it kept from another frame (another
+  // camera, another scene) must not pass for this frame's (its eye side differs).
+  scratch.origin_triangle = OriginTriangle{};
   // Whether an edge binned here has a triangle cutting the light: only then do the pixels need
   // what the quick reject's test of it reads (PixelBlock::qx ...).
   bool tile_cuts = false;
