@@ -48,29 +48,48 @@ double angleBetween(const dvec3& a, const dvec3& b) {  // unit vectors
   return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
 }
 
+// Per cell of one band of rows, what its receivers need (the mask's cells are made of these
+// after the bands are merged): the largest and smallest squared distance from the centre and
+// the largest ball radius, each rounded outward to float only when it changes the cell.
+struct BandCells {
+  std::vector<float> max_squared, min_squared, max_radius;
+  explicit BandCells(size_t cells)
+      : max_squared(cells, -1.0f), min_squared(cells, INFINITY), max_radius(cells, 0.0f) {}
+  void add(size_t cell, double squared, double radius) {
+    if (double(max_squared[cell]) < squared)
+      max_squared[cell] = std::nextafter(float(squared), INFINITY);
+    if (double(min_squared[cell]) > squared)
+      min_squared[cell] = std::nextafter(float(squared), 0.0f);
+    if (double(max_radius[cell]) < radius)
+      max_radius[cell] = std::nextafter(float(radius), INFINITY);
+  }
+};
+
 }  // namespace
 
 ReceiverMask::ReceiverMask(const View& view, const EyeBuffers& eye, const dvec3& centre) {
   const size_t cells = size_t(kFaces) * kReceiverCells * kReceiverCells;
-  // One grid per band of rows, merged after: the maximum does not depend on the bands, so the
-  // mask is the same for any thread count.
+  // One grid per band of rows, merged after: maxima and minima do not depend on the bands, so
+  // the mask is the same for any thread count.
   const size_t bands = std::clamp<size_t>(size_t(2 * workerCount()), 1,
                                           std::max<size_t>(1, size_t(view.height)));
-  std::vector<std::vector<float>> band_farthest(bands), band_spread(bands);
+  std::vector<BandCells> band_cells;
+  band_cells.reserve(bands);
+  for (size_t band = 0; band < bands; ++band) band_cells.emplace_back(cells);
   std::vector<size_t> band_receivers(bands, 0);
   const PixelUnprojector unproject(view);
-  // A pixel footprint per unit of distance from the eye, bounded above (the angle a pixel
-  // spans at the image centre is below its tangent-plane size), with 1 % to spare.
-  const double footprint =
+  // A receiver's ball radius, per unit of its view depth w = near / stored depth: the pixel
+  // footprint (distance to the eye times the pixel angle at the image centre, bounded above by
+  // its tangent-plane size) times kMaxOriginOffsetFootprints, the distance to the eye bounded
+  // by w times the longest pixel ray (at a corner of the image), with 1 % to spare.
+  const double p00 = double(view.projection[0][0]), p11 = double(view.projection[1][1]);
+  const double radius_per_w =
       1.01 * kMaxOriginOffsetFootprints *
-      std::max(2.0 / (double(view.projection[0][0]) * view.width),
-               2.0 / (double(view.projection[1][1]) * view.height));
-  const dvec3 eye_position(view.eye);
+      std::max(2.0 / (p00 * view.width), 2.0 / (p11 * view.height)) *
+      std::sqrt(1.0 + 1.0 / (p00 * p00) + 1.0 / (p11 * p11));
+  const double near_plane = double(view.near_plane);
   parallelFor(bands, [&](size_t band) {
-    std::vector<float>& farthest = band_farthest[band];
-    std::vector<float>& spread = band_spread[band];
-    farthest.assign(cells, -1.0f);
-    spread.assign(cells, 0.0f);
+    BandCells& grid = band_cells[band];
     const int y0 = int(band * size_t(view.height) / bands);
     const int y1 = int((band + 1) * size_t(view.height) / bands);
     size_t count = 0;
@@ -79,32 +98,34 @@ ReceiverMask::ReceiverMask(const View& view, const EyeBuffers& eye, const dvec3&
       const float* depth = eye.depth.depth.row(y);
       for (int x = 0; x < view.width; ++x) {
         if (primitive[x] == kNoPrimitive) continue;
-        const dvec3 p = unproject(x, y, depth[x]);
-        const dvec3 d = p - centre;
-        const double distance = glm::length(d);
-        if (!(distance > 0.0)) continue;
-        const double radius = footprint * glm::length(p - eye_position);
-        // Rounded up to float, so neither falls below the receiver's. The ratio's arcsine is
-        // taken when the cell is visited (it grows with the ratio).
-        const size_t cell = finestCell(d);
-        farthest[cell] =
-            std::max(farthest[cell], std::nextafter(float(distance + radius), INFINITY));
-        spread[cell] = std::max(spread[cell], std::nextafter(float(radius / distance), INFINITY));
+        const dvec3 d = unproject(x, y, depth[x]) - centre;
+        const double squared = glm::dot(d, d);
+        if (!(squared > 0.0)) continue;
+        grid.add(finestCell(d), squared, radius_per_w * near_plane / double(depth[x]));
         ++count;
       }
     }
     band_receivers[band] = count;
   });
+  // A cell's farthest receiver ball reaches at most sqrt(max squared) + max radius from the
+  // centre, and spans at most max radius / sqrt(min squared) (a sine) seen from it.
   farthest_.resize(size_t(levelCount()));
   spread_.resize(size_t(levelCount()));
   farthest_[0].assign(cells, -1.0f);
   spread_[0].assign(cells, 0.0f);
-  for (size_t band = 0; band < bands; ++band) {
-    receivers_ += band_receivers[band];
-    for (size_t c = 0; c < cells; ++c) {
-      farthest_[0][c] = std::max(farthest_[0][c], band_farthest[band][c]);
-      spread_[0][c] = std::max(spread_[0][c], band_spread[band][c]);
+  for (size_t band = 0; band < bands; ++band) receivers_ += band_receivers[band];
+  for (size_t c = 0; c < cells; ++c) {
+    float max_squared = -1.0f, min_squared = INFINITY, max_radius = 0.0f;
+    for (const BandCells& grid : band_cells) {
+      max_squared = std::max(max_squared, grid.max_squared[c]);
+      min_squared = std::min(min_squared, grid.min_squared[c]);
+      max_radius = std::max(max_radius, grid.max_radius[c]);
     }
+    if (max_squared < 0.0f) continue;  // no receiver
+    const double far_side = std::sqrt(double(max_squared)) + double(max_radius);
+    farthest_[0][c] = std::nextafter(float(far_side), INFINITY);
+    spread_[0][c] = std::nextafter(float(double(max_radius) / std::sqrt(double(min_squared))),
+                                   INFINITY);
   }
   for (int level = 1; level < levelCount(); ++level) {
     const int n = levelCells(level), fine = levelCells(level - 1);
