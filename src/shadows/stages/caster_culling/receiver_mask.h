@@ -10,9 +10,9 @@
 //
 // A technique may shade a point up to kMaxOriginOffsetFootprints pixel footprints from its
 // depth-buffer point (ray_origin.h: the oracle's origins, which exact and coverage share). So a
-// receiver is that ball, not the point: each cell also holds the largest angle such a ball
+// receiver is that ball, not the point: each cell also holds a bound on the angle such a ball
 // spans from the centre (asin(radius / distance)), and its distance is taken at the ball's far
-// side.
+// side (receiver_mask.cpp says how both are bounded cheaply).
 #include <cstdint>
 #include <vector>
 
@@ -39,8 +39,9 @@ class ReceiverMask {
   size_t receivers() const { return receivers_; }
 
  private:
-  // Per level (0: finest), per face, row-major: the farthest distance, -1 if empty, and the
-  // largest ratio of a receiver ball's radius to its distance (the sine of its angle).
+  // Per level (0: finest), per face, row-major: how far the farthest receiver ball reaches, -1
+  // if empty, and a bound on the ratio of a ball's radius to its distance (the sine of the
+  // angle it spans).
   std::vector<std::vector<float>> farthest_;
   std::vector<std::vector<float>> spread_;
   size_t receivers_ = 0;
