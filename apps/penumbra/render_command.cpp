@@ -52,6 +52,7 @@ struct RenderArgs {
   bool scalar = false;
   long long delay_stream = 0;      // bytes of the eye pass's delay stream; 0: none
   bool depth_complexity = false;  // count the eye pass's depth passes and covered pixels
+  std::string caster_culling = "on";
   std::string visibility_exr;
   std::string visibility_png;
   std::string depth_exr;
@@ -173,6 +174,7 @@ int runRender(const RenderArgs& args) {
   }
   options.technique.validate();
   options.context.simd = !args.scalar;
+  options.context.caster_culling = args.caster_culling == "on";
   options.context.show_progress = !args.quiet;
   options.context.threads = args.threads;
   options.delay_stream_bytes = size_t(args.delay_stream);
@@ -277,6 +279,11 @@ Subcommand addRenderCommand(CLI::App& app) {
   cmd->add_flag("--depth-complexity", args->depth_complexity,
                 "Count the eye pass's depth passes and covered pixels (eye_depth_passes, "
                 "eye_covered_pixels in --stats)");
+  cmd->add_option("--caster-culling", args->caster_culling,
+                  "Leave out of the shadow volumes, wedges and potential edges the casters "
+                  "whose shadow reaches no visible point (same image; docs/caster-culling.md)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd->add_option("--frames", args->frames,
                   "Time N warm frames (technique prepared once) and print min / median / max "
                   "and each pass's median; outputs are the last frame's")

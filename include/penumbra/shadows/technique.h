@@ -37,6 +37,9 @@ struct RenderContext {
   // Ask the technique for its debug layers (TechniqueResult::debug_layers); off, a technique
   // spends nothing on them.
   bool debug_layers = false;
+  // Leave out of the shadow volumes, wedges and potential edges every caster whose shadow
+  // reaches no visible point (docs/caster-culling.md); the image is the same either way.
+  bool caster_culling = true;
 };
 
 // A picture of one shared stage's work for one light, at the frame's size, as the papers'

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/parallel.h"
@@ -40,6 +41,7 @@
 #include "shadows/coverage/square_coverage_kernel.h"
 #include "shadows/coverage/textured_coverage.h"
 #include "shadows/shared_options.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/stages/caster_volumes/caster_volume.h"
 #include "shadows/stages/potential_edges/edge_bins.h"
 #include "shadows/stages/potential_edges/edge_screen_test.h"
@@ -67,13 +69,16 @@ struct CoverageEdges {
 
 // Every silhouette edge of every mesh, seen from the light centre exactly as the stencil pass
 // sees it (same casterVolume call as shadowStencil).
-// `casts`: per mesh, whether it casts (null: every mesh), as ShadowStencilOptions.
+// `casts`: per mesh, whether it casts (null: every mesh), as ShadowStencilOptions, and
+// `culling` the meshes left out as the stencil leaves them out.
 CoverageEdges silhouetteEdgesFromCentre(const Scene& scene, const Light& light,
                                         const View& view, const EyeBuffers& eye,
-                                        CasterPolicy policy, const std::vector<uint8_t>* casts) {
+                                        CasterPolicy policy, const std::vector<uint8_t>* casts,
+                                        const CasterCulling* culling) {
   CoverageEdges out;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     if (casts != nullptr && !(*casts)[m]) continue;
+    if (culling != nullptr && !culling->mayShadow(m)) continue;
     const CasterVolume volume =
         casterVolume(scene, m, eye, light.center, view, VolumeMode::Auto, policy);
     const Mesh& mesh = scene.meshes[m];
@@ -457,7 +462,8 @@ CoverageImages coveragePass(const CoverageFrame& f, ShadowStencilOptions& stenci
   CoverageEdges edges;
   {
     PassTimer timer(stats, "edges");
-    edges = silhouetteEdgesFromCentre(f.scene, f.light, f.view, f.eye, policy, casts);
+    edges = silhouetteEdgesFromCentre(f.scene, f.light, f.view, f.eye, policy, casts,
+                                      stencil_options.caster_culling);
     stats.wedges += edges.weight.size();
   }
   EdgeBins bins;
@@ -504,9 +510,17 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
                  view.height);
   ShadowStencilOptions stencil_options;
   stencil_options.simd = context.simd;
+  Stats culling_stats;
+  const CasterCulling culling =
+      cullCasters(scene_, light, view, eye, context.caster_culling, culling_stats);
+  stencil_options.caster_culling = &culling;
   // A point light: pass 1 alone, the hard shadow volume bit for bit.
-  if (!(light.radius > 0.0f))
-    return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+  if (!(light.radius > 0.0f)) {
+    TechniqueResult hard =
+        hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+    putCullingFirst(std::move(culling_stats), hard.stats);
+    return hard;
+  }
   // A textured rectangle (light.h): the exact per-channel path beside the area path.
   const bool textured = light.texture != nullptr;
   PENUMBRA_CHECK(!textured || options_.table == CoverageTable::Analytic,
@@ -516,6 +530,7 @@ TechniqueResult CoverageShadows::render(const Light& light, const View& view,
   if (textured) texture = std::make_unique<TexturedSquare>(*light.texture);
   const CoverageTableData* table = nullptr;
   TechniqueResult result;
+  result.stats = std::move(culling_stats);
   Stats& stats = result.stats;
   // Pass 1's stencil stage draws the silhouettes from the centre (the edges pass 2 takes) and
   // its culled tiles.
@@ -578,6 +593,7 @@ std::string coverageTableName(CoverageTable table) {
 TechniqueInfo coverageTechnique() {
   TechniqueInfo info;
   info.name = "coverage";
+  info.counters = casterCullingCounters();
   info.aliases = {"ssv-2003"};
   info.summary = "coverage soft shadow volumes (2003 / Funk 2004): hard volume from the centre, "
                  "plus each silhouette edge's exact covered fraction of a sphere, disk or "

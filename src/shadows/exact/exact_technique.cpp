@@ -29,6 +29,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -42,13 +43,15 @@
 #include "shadows/exact/sample_kernel.h"
 #include "shadows/exact/vertex_rings.h"
 #include "shadows/shared_options.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
+#include "shadows/stages/caster_culling/culled_edges.h"
 #include "shadows/stages/light_sampling/light_sampling.h"
 #include "shadows/stages/light_sampling/ray_origin.h"
 #include "shadows/stages/potential_edges/edge_bins.h"
 #include "shadows/stages/potential_edges/edge_screen_test.h"
 #include "shadows/stages/potential_edges/potential_edges.h"
-#include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/stages/silhouettes/facing_away.h"
+#include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
@@ -171,7 +174,8 @@ class ExactSoftShadows final : public PreparedTechnique {
   // The steps of one light's pass (render): the stencil and the binned edges, then per tile
   // and block of pixels the set-up, the edges' and cutting triangles' tests and the count.
   void stencilAndEdges(const Light& light, const View& view, const EyeBuffers& eye,
-                       const RenderContext& context, StencilQuads& quads,
+                       const RenderContext& context, const CasterCulling& culling,
+                       StencilQuads& quads,
                        Image<int32_t>& stencil, std::shared_ptr<const PotentialEdges>& edges,
                        EdgeBins& bins, TechniqueResult& result) const;
   void shadeTiles(const LightPass& pass, Stats& stats) const;
@@ -469,7 +473,8 @@ void ExactSoftShadows::keepSilhouettes(const Light& light,
 }
 
 void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, const EyeBuffers& eye,
-                                       const RenderContext& context, StencilQuads& quads,
+                                       const RenderContext& context,
+                                       const CasterCulling& culling, StencilQuads& quads,
                                        Image<int32_t>& stencil,
                                        std::shared_ptr<const PotentialEdges>& edges,
                                        EdgeBins& bins, TechniqueResult& result) const {
@@ -486,6 +491,7 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
   std::vector<Silhouette> found;
   stencil_options.known_silhouettes = known.get();
   stencil_options.found_silhouettes = &found;
+  stencil_options.caster_culling = &culling;
   if (context.debug_layers) stencil_options.debug_layers = &result.debug_layers;
   Stats edge_stats;
   const size_t passes_before = stats.time_ms.size();
@@ -496,6 +502,10 @@ void ExactSoftShadows::stencilAndEdges(const Light& light, const View& view, con
         {
           PassTimer timer(edge_stats, "edges");
           edges = cachedPotentialEdges(light);
+          // Cached per light, culled per frame: the culled casters' edges leave a copy.
+          if (!culling.may_shadow.empty())
+            edges = std::make_shared<const PotentialEdges>(
+                withoutCulledCasters(*edges, scene_, culling));
           edge_stats.wedges += edges->edges.size();
         }
         PassTimer timer(edge_stats, "binning");
@@ -743,6 +753,9 @@ void ExactSoftShadows::shadeTile(const LightPass& pass, size_t index, ExactScrat
                                  ExactTileWork& work) const {
   const EdgeBinTile bin =
       edgeBinTile(pass.bins, index, pass.eye.depth.width(), pass.eye.depth.height());
+  // The thread's scratch outlives the frame: a triangle id it kept from another frame (another
+  // camera, another scene) must not pass for this frame's (its eye side differs).
+  scratch.origin_triangle = OriginTriangle{};
   // Whether an edge binned here has a triangle cutting the light: only then do the pixels need
   // what the quick reject's test of it reads (PixelBlock::qx ...).
   bool tile_cuts = false;
@@ -799,19 +812,27 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
   PENUMBRA_CHECK(width == view.width && height == view.height,
                  "eye buffers are {}x{} but the view is {}x{}", width, height, view.width,
                  view.height);
+  Stats culling_stats;
+  const CasterCulling culling =
+      cullCasters(scene_, light, view, eye, context.caster_culling, culling_stats);
   // A point light: the hard shadow volume, bit for bit.
   if (light.radius == 0.0f) {
     ShadowStencilOptions stencil_options;
     stencil_options.simd = context.simd;
-    return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+    stencil_options.caster_culling = &culling;
+    TechniqueResult hard =
+        hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+    putCullingFirst(std::move(culling_stats), hard.stats);
+    return hard;
   }
   TechniqueResult result;
+  result.stats = std::move(culling_stats);
   Stats& stats = result.stats;
   StencilQuads quads;
   Image<int32_t> stencil;
   std::shared_ptr<const PotentialEdges> edges;
   EdgeBins bins;
-  stencilAndEdges(light, view, eye, context, quads, stencil, edges, bins, result);
+  stencilAndEdges(light, view, eye, context, culling, quads, stencil, edges, bins, result);
 
   Image<float> soft(width, height, 1.0f);
   // Disk and rectangle lights: the fixed points of their area; a textured one's visibility per
@@ -860,6 +881,7 @@ TechniqueResult ExactSoftShadows::render(const Light& light, const View& view,
 TechniqueInfo exactTechnique() {
   TechniqueInfo info;
   info.name = "exact";
+  info.counters = casterCullingCounters();
   info.summary = "exact soft shadow volumes: the oracle's answer for a fixed light sample set, "
                  "counted from silhouette edges without rays (Laine et al. 2005)";
   info.traits.soft = true;

@@ -13,12 +13,14 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "shadows/heckbert_herf/light_points.h"
 #include "shadows/shared_options.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
@@ -36,12 +38,23 @@ class HeckbertHerf final : public PreparedTechnique {
     checkLightShape(light);
     ShadowStencilOptions stencil_options;
     stencil_options.simd = context.simd;
+    // Culled once for the whole light: a caster no segment from a visible point to the light
+    // meets casts nothing from any of its points.
+    Stats culling_stats;
+    const CasterCulling culling =
+        cullCasters(scene_, light, view, eye, context.caster_culling, culling_stats);
+    stencil_options.caster_culling = &culling;
     // A point light: one render, the hard shadow volume's image exactly.
-    if (!(light.radius > 0.0f))
-      return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+    if (!(light.radius > 0.0f)) {
+      TechniqueResult hard =
+          hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+      putCullingFirst(std::move(culling_stats), hard.stats);
+      return hard;
+    }
     const std::vector<vec3> points =
         heckbertHerfPoints(light, options_.samples, options_.seed, scene_.bounds().center());
     TechniqueResult result;
+    result.stats = std::move(culling_stats);
     const int width = view.width, height = view.height;
     std::vector<uint16_t> lit(size_t(width) * size_t(height), 0);
     Light point = light;
@@ -112,6 +125,7 @@ class HeckbertHerf final : public PreparedTechnique {
 TechniqueInfo heckbertHerfTechnique() {
   TechniqueInfo info;
   info.name = "heckbert-herf";
+  info.counters = casterCullingCounters();
   info.aliases = {"hh"};
   info.summary = "Heckbert-Herf 1997: the average of N hard shadow volumes from stratified "
                  "points on the light (sphere, disk or rectangle)";

@@ -8,6 +8,7 @@
 #include "shadows/hierarchical/tiled_volume_stencil.h"
 #include "shadows/hierarchical/volume_set.h"
 #include "shadows/shared_options.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/stages/silhouettes/facing_away.h"
 #include "shadows/volume_options.h"
 
@@ -29,6 +30,8 @@ class TiledVolumes final : public PreparedTechnique {
   TechniqueResult render(const Light& light, const View& view, const EyeBuffers& eye,
                          const RenderContext& context) const override {
     TechniqueResult result;
+    const CasterCulling caster_culling =
+        cullCasters(scene_, light, view, eye, context.caster_culling, result.stats);
     Image<float>* silhouettes =
         context.debug_layers
             ? &debugLayer(result.debug_layers, kSilhouetteEdgesLayer,
@@ -36,7 +39,8 @@ class TiledVolumes final : public PreparedTechnique {
                           view.height)
             : nullptr;
     const ShadowVolumeSet volumes = buildShadowVolumes(scene_, light.center, view, eye,
-                                                       options_.mode, result.stats, silhouettes);
+                                                       options_.mode, result.stats, silhouettes,
+                                                       &caster_culling);
     // The stencil resolved tile by tile inside the volume pass (tiledVolumeVisibility): there
     // is no separate "resolve" pass.
     PassTimer timer(result.stats, "volumes");
@@ -88,8 +92,9 @@ TechniqueInfo tiledVolumeTechnique(const char* name, const char* summary, Volume
         return text;
       });
   info.options = table.build();
+  info.counters = casterCullingCounters();
   if (culling == VolumeCulling::Hierarchical)
-    info.counters = {kTilesLit, kTilesShadowed, kTilesBoundary};
+    info.counters.insert(info.counters.end(), {kTilesLit, kTilesShadowed, kTilesBoundary});
   info.prepare = [culling](const std::any& options, const Scene& scene) {
     return std::make_unique<TiledVolumes>(std::any_cast<const TiledVolumeOptions&>(options),
                                           culling, scene);

@@ -105,7 +105,8 @@ void indexVanishedPieces(const ClipTriangles& polygons, std::vector<VanishedPiec
 
 ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const View& view,
                                    const EyeBuffers& eye, VolumeMode mode, Stats& stats,
-                                   Image<float>* silhouette_layer) {
+                                   Image<float>* silhouette_layer,
+                                   const CasterCulling* caster_culling) {
   PassTimer timer(stats, "silhouette");
   ShadowVolumeSet set;
   // Every mesh's polygons in one list, set up in one parallel pass (as the per-pixel stencil
@@ -119,7 +120,13 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
   std::vector<CasterVolume> casters;
   casters.reserve(meshes);
   size_t triangle_room = 0, vertex_room = 0;
+  std::vector<uint8_t> culled(meshes, 0);
   for (size_t m = 0; m < meshes; ++m) {
+    if (caster_culling != nullptr && !caster_culling->mayShadow(m)) {
+      culled[m] = 1;
+      casters.emplace_back();
+      continue;
+    }
     casters.push_back(casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto));
     const CasterVolume& volume = casters.back();
     triangle_room += 2 * volume.silhouette.edges.size();
@@ -132,6 +139,7 @@ ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const
   // The z-pass silhouette edges' ends (eye-pass vertices), projected after the loop.
   std::vector<std::array<uint32_t, 2>> segment_ends;
   for (size_t m = 0; m < meshes; ++m) {
+    if (culled[m]) continue;  // zfail and may_contain_eye stay 0: no polygon reads them
     CasterVolume& volume = casters[m];
     stats.silhouette_edges += volume.silhouette.edges.size();
     if (silhouette_layer != nullptr)

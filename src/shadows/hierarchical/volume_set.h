@@ -11,6 +11,7 @@
 #include "raster/depth_buffer.h"
 #include "raster/triangle_setup.h"
 #include "scene/scene.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/volume_options.h"
 
 namespace penumbra {
@@ -60,9 +61,11 @@ void indexVanishedPieces(const ClipTriangles& polygons, std::vector<VanishedPiec
 
 // Builds the volumes of every scene mesh for a point light at `centre`; fills the pass
 // "silhouette" and the counters silhouette_edges and triangles of `stats`. With
-// `silhouette_layer`, draws the silhouette edges into it (kSilhouetteEdgesLayer).
+// `silhouette_layer`, draws the silhouette edges into it (kSilhouetteEdgesLayer). With
+// `caster_culling`, a mesh it culls keeps an empty volume (no polygon).
 ShadowVolumeSet buildShadowVolumes(const Scene& scene, const vec3& centre, const View& view,
                                    const EyeBuffers& eye, VolumeMode mode, Stats& stats,
-                                   Image<float>* silhouette_layer = nullptr);
+                                   Image<float>* silhouette_layer = nullptr,
+                                   const CasterCulling* caster_culling = nullptr);
 
 }  // namespace penumbra

@@ -38,11 +38,13 @@ ClipTriangles casterPolygons(const Mesh& mesh, const vec3& centre, const View& v
 }  // namespace
 
 MaskVolumes maskVolumes(const Scene& scene, const vec3& centre, const View& view,
-                        const EyeBuffers& eye, VolumeMode mode, Stats& stats) {
+                        const EyeBuffers& eye, VolumeMode mode, Stats& stats,
+                        const CasterCulling* caster_culling) {
   PassTimer timer(stats, "silhouette");
   MaskVolumes out;
   std::vector<uint32_t> part_of_vertex, part_of_polygon, sources, first_of_part;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    if (caster_culling != nullptr && !caster_culling->mayShadow(m)) continue;
     const Mesh& mesh = scene.meshes[m];
     CasterVolume volume = casterVolume(scene, m, eye, centre, view, mode, CasterPolicy::Auto);
     stats.silhouette_edges += volume.silhouette.edges.size();

@@ -16,6 +16,7 @@
 #include "raster/depth_buffer.h"
 #include "raster/triangle_setup.h"
 #include "scene/scene.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/volume_options.h"
 
 namespace penumbra {
@@ -26,8 +27,10 @@ struct MaskVolumes {
   std::vector<uint32_t> caster_of;   // per volume, its caster (scene mesh index)
 };
 
-// Counts silhouette_edges and triangles; adds the pass "silhouette".
+// Counts silhouette_edges and triangles; adds the pass "silhouette". A caster `caster_culling`
+// culls gets no volume.
 MaskVolumes maskVolumes(const Scene& scene, const vec3& centre, const View& view,
-                        const EyeBuffers& eye, VolumeMode mode, Stats& stats);
+                        const EyeBuffers& eye, VolumeMode mode, Stats& stats,
+                        const CasterCulling* caster_culling = nullptr);
 
 }  // namespace penumbra

@@ -150,7 +150,8 @@ MaskBuffer shadowMask(const Scene& scene, const vec3& centre, const View& view,
   PENUMBRA_CHECK(width == view.width && height == view.height,
                  "the eye buffers are {}x{} but the view is {}x{}", width, height, view.width,
                  view.height);
-  const MaskVolumes volumes = maskVolumes(scene, centre, view, eye, options.mode, stats);
+  const MaskVolumes volumes =
+      maskVolumes(scene, centre, view, eye, options.mode, stats, options.caster_culling);
   const uint32_t initial = maskInitialValue(options.normalisation);
   MaskBuffer mask(width, height, options.layout, initial);
   {

@@ -11,6 +11,7 @@
 #include "raster/depth_buffer.h"
 #include "scene/scene.h"
 #include "shadows/mask/mask_counters.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/mask/mask_kernel.h"
 #include "shadows/mask/mask_values.h"
 
@@ -47,6 +48,8 @@ struct ShadowMaskOptions {
   MaskLayout layout = MaskLayout::Alpha8;
   bool simd = true;
   bool normalise = true;  // false: the raw mask after the volumes (tests of section 4.2's states)
+  // Not null: the casters it culls (caster_culling.h) draw no volume.
+  const CasterCulling* caster_culling = nullptr;
 };
 
 // Where the 8 bits were not enough: the pixels a halving took below 1/255 (their value, and so

@@ -11,7 +11,10 @@
 // volume both counts are equal, since each closed volume's polygons sum to zero along a ray.
 #include "shadows/volume/volume_technique.h"
 
+#include <utility>
+
 #include "shadows/shared_options.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/stages/stencil/shadow_stencil.h"
 
 namespace penumbra {
@@ -28,7 +31,14 @@ class ShadowVolumes final : public PreparedTechnique {
     stencil_options.mode = options_.mode;
     stencil_options.two_level_stencil = options_.two_level_stencil;
     stencil_options.simd = context.simd;
-    return hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+    Stats culling_stats;
+    const CasterCulling culling =
+        cullCasters(scene_, light, view, eye, context.caster_culling, culling_stats);
+    stencil_options.caster_culling = &culling;
+    TechniqueResult result =
+        hardShadowVolumes(scene_, light, view, eye, stencil_options, context.debug_layers);
+    putCullingFirst(std::move(culling_stats), result.stats);
+    return result;
   }
 
  private:
@@ -41,6 +51,7 @@ class ShadowVolumes final : public PreparedTechnique {
 TechniqueInfo volumeTechnique() {
   TechniqueInfo info;
   info.name = "volume";
+  info.counters = casterCullingCounters();
   info.summary = "hard shadow volumes from the light centre, z-pass / z-fail per caster";
   // Ties only: pixels whose point lies on a volume polygon, at most a few per frame.
   info.traits.covered_mae_bound = 0.001;

@@ -500,7 +500,8 @@ LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& sce
   std::vector<MeshWedges> prepared(scene.meshes.size());
   // The other facing's pass draws only the meshes it was given.
   auto casts = [&](size_t m) {
-    return options.other_facing_meshes == nullptr || (*options.other_facing_meshes)[m] != 0;
+    return (options.other_facing_meshes == nullptr || (*options.other_facing_meshes)[m] != 0) &&
+           (options.caster_culling == nullptr || options.caster_culling->mayShadow(m));
   };
   parallelFor(scene.meshes.size(), [&](size_t m) {
     if (casts(m)) prepared[m] = prepareMesh(options, scene, m, light, view, eye, projection);

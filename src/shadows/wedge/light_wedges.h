@@ -9,6 +9,7 @@
 #include "raster/depth_buffer.h"
 #include "raster/triangle_setup.h"
 #include "scene/scene.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/stages/caster_volumes/caster_volume.h"
 #include "shadows/wedge/wedge.h"
 #include "shadows/wedge/wedge_screen.h"
@@ -61,6 +62,8 @@ struct LightWedgesOptions {
   // it otherwise leaves out (CasterPolicy::SolidWithHolesOtherFacing): the wedges' second pass
   // (wedge_technique.cpp), as ShadowStencilOptions::casting_meshes for the coverage technique.
   const std::vector<uint8_t>* other_facing_meshes = nullptr;
+  // Not null: the meshes it culls (caster_culling.h) build no wedge and no umbra quad.
+  const CasterCulling* caster_culling = nullptr;
 };
 LightWedges buildLightWedges(const LightWedgesOptions& options, const Scene& scene,
                            const Light& light, const View& view, const EyeBuffers& eye);

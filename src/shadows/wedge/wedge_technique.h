@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/stages/caster_volumes/caster_volume.h"
 #include "shadows/technique.h"
 #include "shadows/wedge/li_buffer.h"
@@ -23,6 +24,7 @@ TechniqueInfo wedgeTechnique(WedgeAlgorithm algorithm);
 WedgeLi renderWedgeLi(WedgeAlgorithm algorithm, const WedgeOptions& options, const Scene& scene,
                       const Light& light, const View& view, const EyeBuffers& eye,
                       const RenderContext& context = {}, int8_t edge_on_facing = 0,
-                      const std::vector<uint8_t>* other_facing_meshes = nullptr);
+                      const std::vector<uint8_t>* other_facing_meshes = nullptr,
+                      const CasterCulling* caster_culling = nullptr);
 
 }  // namespace penumbra

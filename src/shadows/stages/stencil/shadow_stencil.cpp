@@ -113,10 +113,12 @@ Image<int32_t> shadowStencil(const Scene& scene, const vec3& centre, const View&
     if (found != nullptr) found->assign(scene.meshes.size(), Silhouette{});
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
       if (options.casting_meshes != nullptr && !(*options.casting_meshes)[m]) continue;
+      if (options.caster_culling != nullptr && !options.caster_culling->mayShadow(m)) continue;
+      const bool is_known = known != nullptr && (*known)[m].orientation.size() ==
+                                                    scene.meshes[m].triangleCount();
       CasterVolume volume =
-          known != nullptr
-              ? casterVolume(scene, m, (*known)[m], eye, centre, view, options.mode)
-              : casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
+          is_known ? casterVolume(scene, m, (*known)[m], eye, centre, view, options.mode)
+                   : casterVolume(scene, m, eye, centre, view, options.mode, options.policy);
       if (found != nullptr) (*found)[m] = volume.silhouette;
       stats.silhouette_edges += volume.silhouette.edges.size();
       if (silhouette_layer != nullptr)

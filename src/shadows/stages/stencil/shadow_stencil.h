@@ -13,6 +13,7 @@
 #include "raster/depth_buffer.h"
 #include "raster/triangle_setup.h"
 #include "scene/scene.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 #include "shadows/stages/silhouettes/silhouette.h"
 #include "shadows/technique.h"
 #include "shadows/volume_options.h"
@@ -44,13 +45,17 @@ struct ShadowStencilOptions {
   // Per mesh, whether it casts (null: every mesh): the soft techniques' second pass over the
   // open meshes' other facing draws only those meshes (silhouette.h).
   const std::vector<uint8_t>* casting_meshes = nullptr;
+  // When set, the meshes it culls (caster_culling.h) get no silhouette and no volume.
+  const CasterCulling* caster_culling = nullptr;
   // When set, receives the polygons as set up (StencilQuads).
   StencilQuads* quads = nullptr;
   // When set, one per mesh: the meshes' silhouettes from the centre with `policy`
-  // (findSilhouette), kept by a caller whose light has not moved, used instead of finding them.
+  // (findSilhouette), kept by a caller whose light has not moved, used instead of finding them;
+  // an entry with no orientation for a mesh with triangles (one culled when it was found) is
+  // found again.
   const std::vector<Silhouette>* known_silhouettes = nullptr;
   // When set (and known_silhouettes is not), receives the silhouettes found, one per mesh (empty
-  // for a mesh that casts nothing).
+  // for a mesh that casts nothing or was culled).
   std::vector<Silhouette>* found_silhouettes = nullptr;
   // When set, the debug layers of the silhouettes (kSilhouetteEdgesLayer) and of the tile
   // culling (kCulledTilesLayer) are added to it (shadows/technique.h).
