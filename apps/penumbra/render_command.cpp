@@ -50,6 +50,7 @@ struct RenderArgs {
   // than the fourth): three untimed frames reach the steady state, as the llvmpipe peer's do.
   int warmup = 3;
   bool scalar = false;
+  std::string occlusion_culling = "on";
   std::string visibility_exr;
   std::string visibility_png;
   std::string depth_exr;
@@ -173,6 +174,7 @@ int runRender(const RenderArgs& args) {
   options.context.simd = !args.scalar;
   options.context.show_progress = !args.quiet;
   options.context.threads = args.threads;
+  options.occlusion_culling = args.occlusion_culling == "on";
   options.width = args.width;
   options.height = args.height;
   requireExtension(args.output, ".png", "output");
@@ -265,6 +267,11 @@ Subcommand addRenderCommand(CLI::App& app) {
       ->check(wholeNumberIn(0, 4096))
       ->capture_default_str();
   cmd->add_flag("--scalar", args->scalar, "Run the scalar twins of the SIMD kernels");
+  cmd->add_option("--occlusion-culling", args->occlusion_culling,
+                  "Skip objects the eye pass can prove hidden (docs/occlusion-culling.md); the "
+                  "image is the same either way")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd->add_option("--frames", args->frames,
                   "Time N warm frames (technique prepared once) and print min / median / max "
                   "and each pass's median; outputs are the last frame's")
