@@ -21,6 +21,19 @@ namespace {
 constexpr uint64_t kFirstBatchTriangles = 4096;
 constexpr uint64_t kMaxBatchTriangles = 131072;
 
+// Adaptive occluder selection (the thesis's publication P3 selects occluders by their
+// benefit): an object visible or found visible is drawn into the occlusion buffer only when its
+// screen rect holds at least this many pixels per triangle. A far object of small triangles
+// costs as much to set up as a near one and hides almost nothing; it is still drawn by the eye
+// pass.
+constexpr double kOccluderPixelsPerTriangle = 16.0;
+
+bool worthDrawing(const ScreenBox& box, uint32_t triangles) {
+  if (box.kind == ScreenBox::Kind::Outside) return false;
+  const double pixels = double(box.x1 - box.x0 + 1) * double(box.y1 - box.y0 + 1);
+  return pixels >= kOccluderPixelsPerTriangle * double(triangles);
+}
+
 struct QueuedNode {
   double key;  // nearest depth of its box; larger is closer (reversed-Z)
   uint32_t node;
@@ -66,10 +79,11 @@ void OcclusionCuller::drawBatch(const std::vector<uint32_t>& clusters,
 
 // Front-to-back over the hierarchy (a queue ordered by the nearest depth of the nodes' boxes):
 // a node whose box is hidden behind what the occlusion buffer holds is dropped with its subtree;
-// a leaf's object that is not hidden joins the batch being gathered, drawn into the buffer once
-// it is big enough, so the objects behind it are tested against it (the thesis's front-to-back
-// traversal with occlusion queries, section 3.1). The objects visible in the previous frame are
-// drawn first, untested, as occluders (visible point tracking's coherence). Returns every object
+// a leaf's object that is not hidden is kept and, when worth drawing, joins the batch being
+// gathered, drawn into the buffer once it is big enough, so the objects behind it are tested
+// against it (the thesis's front-to-back traversal with occlusion queries, section 3.1). The
+// objects visible in the previous frame are kept and drawn first, untested, as occluders
+// (visible point tracking's coherence). Returns every object
 // not dropped, in no particular order.
 std::vector<uint32_t> OcclusionCuller::traverse(const View& view,
                                                 const std::vector<vec4>& clip_vertices,
@@ -78,13 +92,14 @@ std::vector<uint32_t> OcclusionCuller::traverse(const View& view,
   std::vector<uint8_t> accepted(h.clusters.size(), 0);
   std::vector<uint32_t> batch, result;
   for (uint32_t c = 0; c < h.clusters.size(); ++c) {
-    if (!was_visible_[c] || projectBox(h.clusters[c].bounds, view).kind == ScreenBox::Kind::Outside)
-      continue;
+    if (!was_visible_[c]) continue;
+    const ScreenBox box = projectBox(h.clusters[c].bounds, view);
+    if (box.kind == ScreenBox::Kind::Outside) continue;
     accepted[c] = 1;
-    batch.push_back(c);
+    result.push_back(c);
+    if (worthDrawing(box, h.clusters[c].count)) batch.push_back(c);
   }
   drawBatch(batch, clip_vertices, stats, simd);
-  result = batch;
   batch.clear();
   uint64_t batch_triangles = 0, batch_limit = kFirstBatchTriangles;
   uint64_t tested = 0, hidden = 0, tiles_read = 0;
@@ -108,8 +123,9 @@ std::vector<uint32_t> OcclusionCuller::traverse(const View& view,
     const uint32_t c = node.first;
     if (accepted[c]) continue;
     accepted[c] = 1;
-    batch.push_back(c);
     result.push_back(c);
+    if (!worthDrawing(q.box, h.clusters[c].count)) continue;
+    batch.push_back(c);
     batch_triangles += h.clusters[c].count;
     if (batch_triangles >= batch_limit) {
       drawBatch(batch, clip_vertices, stats, simd);

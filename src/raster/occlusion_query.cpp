@@ -62,21 +62,42 @@ ScreenBox projectBox(const Bounds3& box, const View& view) {
   return out;
 }
 
+namespace {
+
+// Tile (tx, ty) of `level` and, where its z-min does not decide, its children down to
+// `finest`, over the rect only: true when every pixel of the rect in the tile is covered by a
+// surface strictly closer than `nearest` (a tie could go to the object). The coarse z-min is the
+// farthest of its pixels, so a tile holding some sky (0) or a far surface beside the occluder
+// fails as a whole, while its children beside the sky may not (the refinement of a depth
+// pyramid's test, Greene and Kass's hierarchical z-buffer that the thesis's section 2.1 cites).
+bool tileHidden(const ScreenBox& box, const DepthBuffer& occlusion, int level, int tx, int ty,
+                int finest, uint64_t& tiles_read) {
+  ++tiles_read;
+  if (double(occlusion.tiles[level].zmin.at(tx, ty)) > box.nearest) return true;
+  if (level <= finest) return false;
+  const int child = level - 1;
+  for (int cy = std::max(2 * ty, box.y0 >> child); cy <= std::min(2 * ty + 1, box.y1 >> child);
+       ++cy)
+    for (int cx = std::max(2 * tx, box.x0 >> child); cx <= std::min(2 * tx + 1, box.x1 >> child);
+         ++cx)
+      if (!tileHidden(box, occlusion, child, cx, cy, finest, tiles_read)) return false;
+  return true;
+}
+
+}  // namespace
+
 bool boxHidden(const ScreenBox& box, const DepthBuffer& occlusion, uint64_t& tiles_read) {
   if (box.kind != ScreenBox::Kind::Inside) return false;
   int level = kMinTileLevel;
   while (level < kMaxTileLevel &&
-         ((box.x1 >> level) - (box.x0 >> level) >= 4 || (box.y1 >> level) - (box.y0 >> level) >= 4))
+         ((box.x1 >> level) - (box.x0 >> level) >= 2 || (box.y1 >> level) - (box.y0 >> level) >= 2))
     ++level;
-  const Image<float>& zmin = occlusion.tiles[level].zmin;
-  for (int ty = box.y0 >> level; ty <= box.y1 >> level; ++ty) {
-    const float* row = zmin.row(ty);
-    for (int tx = box.x0 >> level; tx <= box.x1 >> level; ++tx) {
-      ++tiles_read;
-      // Strictly closer at every pixel of the tile: a tie could go to the object.
-      if (!(double(row[tx]) > box.nearest)) return false;
-    }
-  }
+  // Down to tiles of 4x4 pixels, at most four levels below the first: the reads stay a small
+  // fraction of the rect's pixels.
+  const int finest = std::max(2, level - 4);
+  for (int ty = box.y0 >> level; ty <= box.y1 >> level; ++ty)
+    for (int tx = box.x0 >> level; tx <= box.x1 >> level; ++tx)
+      if (!tileHidden(box, occlusion, level, tx, ty, finest, tiles_read)) return false;
   return true;
 }
 

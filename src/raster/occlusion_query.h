@@ -31,7 +31,8 @@ ScreenBox projectBox(const Bounds3& box, const View& view);
 // True when every pixel of the rect already holds a surface strictly closer than the box's
 // nearest depth: then none of the box's triangles can win a pixel of the final depth test,
 // whatever is drawn later (depth only grows). Reads the z-min of the level whose tiles cut the
-// rect into at most 4 x 4 (fewer reads for big rects; level 8 beyond). Counts the tiles read.
+// rect into at most 2 x 2 (level 8 beyond) and, where a tile does not decide, of its children
+// over the rect, down to 4 x 4 pixels or four levels. Counts the tiles read.
 bool boxHidden(const ScreenBox& box, const DepthBuffer& occlusion, uint64_t& tiles_read);
 
 // The single-pixel query of visible point tracking (thesis, section 3.1): true when the point

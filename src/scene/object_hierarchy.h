@@ -14,7 +14,7 @@ namespace penumbra {
 // Most clusters hold between half this and this many triangles: a few hundred, so a cluster's
 // box is tight enough to be hidden behind a wall while the per-cluster test stays a small cost
 // next to rasterizing its triangles.
-inline constexpr uint32_t kClusterTriangles = 256;
+inline constexpr uint32_t kClusterTriangles = 64;
 
 struct ObjectCluster {
   Bounds3 bounds;        // world space, of its triangles' vertices
