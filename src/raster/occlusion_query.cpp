@@ -23,11 +23,27 @@ ScreenBox projectBox(const Bounds3& box, const View& view) {
   if (box.empty()) return out;
   double min_x = HUGE_VAL, min_y = HUGE_VAL, max_x = -HUGE_VAL, max_y = -HUGE_VAL;
   double min_w = HUGE_VAL;
+  const double near = double(view.near_plane);
+  // Frustum culling in homogeneous clip space, valid whatever the sign of w: the visible region
+  // is -w <= x <= w, -w <= y <= w, w >= near, and a box whose eight corners all lie beyond one
+  // of these planes (by the rect's slack of two pixels and a relative hair) lies beyond it
+  // whole, behind the eye included. Bit b of `beyond` stays set while every corner is beyond
+  // plane b.
+  const double slack_x = 2.0 * (kRectSlack + 1) / view.width + 1e-3;
+  const double slack_y = 2.0 * (kRectSlack + 1) / view.height + 1e-3;
+  unsigned beyond = 31;
   for (int corner = 0; corner < 8; ++corner) {
     const vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
                  (corner & 4) ? box.max.z : box.min.z);
     const vec4 c = view.toClip(vec4(p, 1.0f));
-    const double w = double(c.w);
+    const double w = double(c.w), x = double(c.x), y = double(c.y), aw = std::fabs(w);
+    unsigned planes = 0;
+    if (x - w > slack_x * aw) planes |= 1;
+    if (-x - w > slack_x * aw) planes |= 2;
+    if (y - w > slack_y * aw) planes |= 4;
+    if (-y - w > slack_y * aw) planes |= 8;
+    if (near - w > 1e-3 * near) planes |= 16;
+    beyond &= planes;
     min_w = std::min(min_w, w);
     if (!(w > 0.0)) continue;
     const double sx = (double(c.x) / w * 0.5 + 0.5) * view.width;
@@ -37,9 +53,9 @@ ScreenBox projectBox(const Bounds3& box, const View& view) {
     min_y = std::min(min_y, sy);
     max_y = std::max(max_y, sy);
   }
+  if (beyond != 0) return out;
   // w is affine over the box, so its corners hold its minimum. Within a hair of the near plane
   // the near-plane clipping of the rasterizer may cut the object: not tested, drawn.
-  const double near = double(view.near_plane);
   if (!(min_w > near * (1.0 + 1e-3) + 1e-6)) {
     out.kind = ScreenBox::Kind::Crossing;
     out.x0 = 0;

@@ -15,7 +15,7 @@ namespace penumbra {
 // Everything the rasterizer could draw of an object inside a box, on screen.
 struct ScreenBox {
   enum class Kind : uint8_t {
-    Outside,   // no pixel centre of the image can be covered: off screen
+    Outside,   // no pixel centre of the image can be covered: off screen or behind the eye
     Crossing,  // the box reaches the near plane (or the eye is inside it): never culled
     Inside,    // wholly in front of the near plane: the rect and depth below hold
   };
