@@ -27,7 +27,8 @@ class OcclusionCuller {
   // Appends to `out` (indices into `clip_vertices`, the frame's clip-space vertices of every mesh,
   // and the global ids as payloads) every triangle that may be visible in `view`, in increasing
   // id order, so the eye pass draws them as it would draw all of them: the same ties. Counts into
-  // `stats`. Frames must come one at a time (the culler keeps the last frame's visible objects).
+  // `stats`. Thread-safe (a lock), but its first occluders are the objects of the frame tracked
+  // last, so frames of one view sequence should come one at a time.
   void selectTriangles(const View& view, const std::vector<vec4>& clip_vertices,
                        ClipTriangles& out, Stats& stats, bool simd);
   // Records the objects visible in the eye pass's buffers, and a visible point of each, for the
