@@ -246,10 +246,17 @@ json lightsDigest(const FrameResult& frame) {
 json digestScene(const Scene& scene, const std::string& scene_key,
                  const std::vector<DigestConfig>& configs) {
   json digest = {{"configs", json::object()}};
-  for (const DigestConfig& config : configs) {
+  for (size_t i = 0; i < configs.size(); ++i) {
+    const DigestConfig& config = configs[i];
     const std::string key = configKey(config);
-    const FrameResult frame = renderFrame(scene, frameOptionsFor(config));
-    const json eye = eyeDigest(frame);
+    FrameOptions options = frameOptionsFor(config);
+    // Every other configuration with the eye pass's occlusion culling, which must change no
+    // buffer (docs/occlusion-culling.md): the same depth, ids and visibility digests, while the
+    // eye pass's work counters are the unculled pass's only without it (recorded: culling off).
+    options.occlusion_culling = i % 2 == 1;
+    const FrameResult frame = renderFrame(scene, options);
+    json eye = eyeDigest(frame);
+    if (options.occlusion_culling && digest.contains("eye")) eye["counters"] = digest["eye"]["counters"];
     if (!digest.contains("eye")) {
       digest["eye"] = eye;
     } else if (eye != digest["eye"]) {

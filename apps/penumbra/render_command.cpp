@@ -53,6 +53,7 @@ struct RenderArgs {
   long long delay_stream = 0;      // bytes of the eye pass's delay stream; 0: none
   bool depth_complexity = false;  // count the eye pass's depth passes and covered pixels
   std::string caster_culling = "on";
+  std::string occlusion_culling = "on";
   std::string visibility_exr;
   std::string visibility_png;
   std::string depth_exr;
@@ -179,6 +180,7 @@ int runRender(const RenderArgs& args) {
   options.context.threads = args.threads;
   options.delay_stream_bytes = size_t(args.delay_stream);
   options.depth_complexity = args.depth_complexity;
+  options.occlusion_culling = args.occlusion_culling == "on";
   options.width = args.width;
   options.height = args.height;
   requireExtension(args.output, ".png", "output");
@@ -282,6 +284,11 @@ Subcommand addRenderCommand(CLI::App& app) {
   cmd->add_option("--caster-culling", args->caster_culling,
                   "Leave out of the shadow volumes, wedges and potential edges the casters "
                   "whose shadow reaches no visible point (same image; docs/caster-culling.md)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--occlusion-culling", args->occlusion_culling,
+                  "Skip objects the eye pass can prove hidden (docs/occlusion-culling.md); the "
+                  "image is the same either way")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--frames", args->frames,

@@ -6,6 +6,7 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "raster/eye_pass.h"
+#include "raster/occlusion_culler.h"
 #include "render/shading_kernel.h"
 #include "render/shading_reuse.h"
 
@@ -19,6 +20,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, FrameOptions options)
   const auto start = std::chrono::steady_clock::now();
   technique_ = prepareTechnique(options_.technique, scene_);
   shading_triangles_ = std::make_unique<ShadingTriangleTable>(scene_);
+  if (options_.occlusion_culling) occlusion_ = std::make_unique<OcclusionCuller>(scene_);
   prepare_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -39,7 +41,8 @@ void FrameRenderer::render(FrameResult& frame) const {
   frame.eye = renderEyePass(scene_, frame.view, frame.eye_stats,
                             DepthPassOptions{.simd = context.simd,
                                              .delay_stream_bytes = options_.delay_stream_bytes,
-                                             .depth_complexity = options_.depth_complexity});
+                                             .depth_complexity = options_.depth_complexity},
+                            occlusion_.get());
   frame.total.add(frame.eye_stats);
   frame.lights.reserve(scene_.lights.size());
   for (const Light& light : scene_.lights) {

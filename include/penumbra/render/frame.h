@@ -25,6 +25,10 @@ struct FrameOptions {
   // Count the eye pass's depth complexity (eye_depth_passes, eye_covered_pixels); always
   // counted with a delay stream.
   bool depth_complexity = false;
+  // Object-level occlusion culling in the eye pass (docs/occlusion-culling.md): hidden objects
+  // are not rasterized. Every output is bit-identical either way; only the eye pass's work and
+  // counters change.
+  bool occlusion_culling = true;
 };
 
 struct FrameResult {
@@ -40,13 +44,16 @@ struct FrameResult {
 // such as the oracle's BVH: shadows/technique.h). The scene must outlive the renderer and stay
 // unchanged.
 class ShadingTriangleTable;
+class OcclusionCuller;
 
 class FrameRenderer {
  public:
   FrameRenderer(const Scene& scene, FrameOptions options);
   ~FrameRenderer();
   // Overwrites every field of `frame`; the colour image keeps its memory when the size is
-  // unchanged, so a frame does not pay for allocating and page-faulting a new image.
+  // unchanged, so a frame does not pay for allocating and page-faulting a new image. With
+  // occlusion culling the objects visible in one frame are the first occluders of the next, so
+  // frames of one renderer must not be rendered at once from several threads.
   void render(FrameResult& frame) const;
   const FrameOptions& options() const { return options_; }
   double prepareMs() const { return prepare_ms_; }  // preparing the technique for the scene
@@ -57,6 +64,8 @@ class FrameRenderer {
   std::unique_ptr<PreparedTechnique> technique_;
   // The scene's triangle records for shading, kept from frame to frame (shadeFrameInto).
   std::unique_ptr<ShadingTriangleTable> shading_triangles_;
+  // The objects' hierarchy and the last frame's visible objects, when culling is on.
+  std::unique_ptr<OcclusionCuller> occlusion_;
   double prepare_ms_ = 0;
 };
 
