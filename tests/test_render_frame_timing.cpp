@@ -35,8 +35,8 @@ TEST(FrameTiming, TimesTheRequestedFramesAndEveryPass) {
     passes.push_back(name);
     EXPECT_LE(ms, t.maxMs()) << name;
   }
-  EXPECT_EQ(passes, (std::vector<std::string>{"eye", "wedges", "setup", "umbra", "penumbra",
-                                               "resolve", "shade"}));
+  EXPECT_EQ(passes, (std::vector<std::string>{"eye", "caster culling", "wedges", "setup", "umbra",
+                                               "penumbra", "resolve", "shade"}));
   ASSERT_EQ(frame.lights.size(), scene.lights.size());
   EXPECT_EQ(frame.color.width(), 64);
   EXPECT_THROW(timeFrames(renderer, 0, 1, frame), Error);
