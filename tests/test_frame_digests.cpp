@@ -256,7 +256,8 @@ json digestScene(const Scene& scene, const std::string& scene_key,
     options.occlusion_culling = i % 2 == 1;
     const FrameResult frame = renderFrame(scene, options);
     json eye = eyeDigest(frame);
-    if (options.occlusion_culling && digest.contains("eye")) eye["counters"] = digest["eye"]["counters"];
+    if (options.occlusion_culling && digest.contains("eye"))
+      eye["counters"] = digest["eye"]["counters"];
     if (!digest.contains("eye")) {
       digest["eye"] = eye;
     } else if (eye != digest["eye"]) {

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <limits>
 #include <queue>
+#include <utility>
 
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -38,7 +39,9 @@ struct QueuedNode {
   double key;  // nearest depth of its box; larger is closer (reversed-Z)
   uint32_t node;
   ScreenBox box;
-  bool operator<(const QueuedNode& o) const { return key < o.key || (key == o.key && node > o.node); }
+  bool operator<(const QueuedNode& o) const {
+    return key < o.key || (key == o.key && node > o.node);
+  }
 };
 
 QueuedNode queued(const ObjectHierarchy& h, uint32_t node, const View& view) {
@@ -216,7 +219,8 @@ void OcclusionCuller::selectTriangles(const View& view, const std::vector<vec4>&
                                       ClipTriangles& out, Stats& stats, bool simd) {
   std::lock_guard lock(mutex_);
   clearOcclusionBuffer(occlusion_, view.width, view.height);
-  const std::vector<uint32_t> kept = retest(view, traverse(view, clip_vertices, stats, simd), stats);
+  std::vector<uint32_t> candidates = traverse(view, clip_vertices, stats, simd);
+  const std::vector<uint32_t> kept = retest(view, std::move(candidates), stats);
   const size_t before = out.size();
   emitTriangles(kept, out);
   stats.count(kOcclusionSceneTriangles, hierarchy_.triangleCount());

@@ -56,7 +56,8 @@ MeshClusters clusterMesh(const Mesh& mesh) {
   for (size_t t = 0; t < n; ++t)
     centroids[t] = (mesh.vertex(t, 0) + mesh.vertex(t, 1) + mesh.vertex(t, 2)) / 3.0f;
   splitTriangles(centroids, out.ids, 0, n, out.pieces);
-  for (const auto& [b, e] : out.pieces) std::sort(out.ids.begin() + long(b), out.ids.begin() + long(e));
+  for (const auto& [b, e] : out.pieces)
+    std::sort(out.ids.begin() + long(b), out.ids.begin() + long(e));
   return out;
 }
 
