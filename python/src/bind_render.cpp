@@ -22,12 +22,24 @@ double msSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
+// The frame options that are not the technique's: the culling switches and the eye pass's delay
+// stream, as `penumbra render` has them (--occlusion-culling, --caster-culling, --delay-stream).
+struct FrameSwitches {
+  bool occlusion_culling = true;
+  bool caster_culling = true;
+  long long delay_stream = 0;  // bytes; 0: none
+};
+
 // The frame's settings; technique options by name (tile_size or tile-size) with values as the
 // command line takes them.
 FrameOptions makeFrameOptions(const std::string& technique, int width, int height, int threads,
-                              bool simd, const OptionTexts& options) {
+                              bool simd, const FrameSwitches& switches,
+                              const OptionTexts& options) {
   PENUMBRA_CHECK(width >= 0 && height >= 0, "frame size {}x{} is negative", width, height);
   PENUMBRA_CHECK(threads >= 0, "threads {} is negative (0: all cores)", threads);
+  PENUMBRA_CHECK(switches.delay_stream >= 0 && switches.delay_stream <= (1LL << 34),
+                 "delay_stream {} bytes is outside 0..2^34 (0: no delay stream)",
+                 switches.delay_stream);
   FrameOptions frame;
   frame.technique = TechniqueConfig(technique);
   for (const auto& [name, value] : options) {
@@ -40,6 +52,9 @@ FrameOptions makeFrameOptions(const std::string& technique, int width, int heigh
   frame.height = height;
   frame.context.threads = threads;
   frame.context.simd = simd;
+  frame.context.caster_culling = switches.caster_culling;
+  frame.occlusion_culling = switches.occlusion_culling;
+  frame.delay_stream_bytes = size_t(switches.delay_stream);
   return frame;
 }
 
@@ -119,9 +134,11 @@ void bindRender(py::module_& m) {
   m.def(
       "_render",
       [](const std::shared_ptr<Scene>& scene, const std::string& technique, int width, int height,
-         int threads, bool simd, const OptionTexts& options) {
-        const FrameOptions frame_options =
-            makeFrameOptions(technique, width, height, threads, simd, options);
+         int threads, bool simd, bool occlusion_culling, bool caster_culling,
+         long long delay_stream, const OptionTexts& options) {
+        const FrameOptions frame_options = makeFrameOptions(
+            technique, width, height, threads, simd,
+            FrameSwitches{occlusion_culling, caster_culling, delay_stream}, options);
         checkLightsForFrame(*scene);
         auto frame = std::make_shared<FrameResult>();
         double render_ms = 0;
@@ -135,16 +152,22 @@ void bindRender(py::module_& m) {
         return wrapFrame(std::move(frame), prepare_ms, render_ms);
       },
       py::arg("scene"), py::arg("technique"), py::arg("width"), py::arg("height"),
-      py::arg("threads"), py::arg("simd"), py::arg("options"));
+      py::arg("threads"), py::arg("simd"), py::arg("occlusion_culling"),
+      py::arg("caster_culling"), py::arg("delay_stream"), py::arg("options"));
 
   py::class_<Renderer>(m, "_Renderer")
       .def(py::init([](std::shared_ptr<Scene> scene, const std::string& technique, int width,
-                       int height, int threads, bool simd, const OptionTexts& options) {
+                       int height, int threads, bool simd, bool occlusion_culling,
+                       bool caster_culling, long long delay_stream, const OptionTexts& options) {
              return std::make_unique<Renderer>(
-                 std::move(scene), makeFrameOptions(technique, width, height, threads, simd, options));
+                 std::move(scene),
+                 makeFrameOptions(technique, width, height, threads, simd,
+                                  FrameSwitches{occlusion_culling, caster_culling, delay_stream},
+                                  options));
            }),
            py::arg("scene"), py::arg("technique"), py::arg("width"), py::arg("height"),
-           py::arg("threads"), py::arg("simd"), py::arg("options"))
+           py::arg("threads"), py::arg("simd"), py::arg("occlusion_culling"),
+           py::arg("caster_culling"), py::arg("delay_stream"), py::arg("options"))
       .def("render", &Renderer::render)
       .def_property_readonly("scene", &Renderer::scene)
       .def_property_readonly("prepare_ms", &Renderer::prepareMs)

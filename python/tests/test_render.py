@@ -89,7 +89,27 @@ def test_option_keywords_reach_the_technique():
     (lambda: penumbra.render("spheres", technique="volume", samples=4), "samples"),
     (lambda: penumbra.render("spheres", technique="volume", width=99999, height=10), "99999"),
     (lambda: penumbra.load_scene("no-such-scene.json"), "no-such-scene.json"),
+    (lambda: penumbra.render("spheres", technique="volume", delay_stream=-1), "delay_stream"),
 ])
 def test_errors_raise_with_the_library_message(call, message):
     with pytest.raises(penumbra.Error, match=message):
         call()
+
+
+def test_culling_switches_change_the_work_not_the_image():
+    # The eye pass's occlusion culling, the shadow stages' caster culling and the delay stream
+    # must leave every float bit of the frame as it is: a difference means the switches do not
+    # reach the library as the CLI's flags do, or a culling is not conservative. The counters
+    # show each switch reached it.
+    scene = penumbra.load_scene("interior:1")
+    plain = penumbra.render(scene, technique="volume", width=WIDTH, height=HEIGHT,
+                            occlusion_culling=False, caster_culling=False)
+    culled = penumbra.render(scene, technique="volume", width=WIDTH, height=HEIGHT,
+                             delay_stream=1 << 20)
+    for a, b in zip(plain.visibility + [plain.color, plain.depth],
+                    culled.visibility + [culled.color, culled.depth]):
+        assert np.array_equal(a.view(np.uint32), b.view(np.uint32))
+    assert plain.counters.get("occlusion_scene_triangles", 0) == 0
+    assert culled.counters["occlusion_scene_triangles"] > 0
+    assert culled.counters["casters_tested"] > 0 and plain.counters.get("casters_tested", 0) == 0
+    assert culled.counters["delay_ring_triangles"] > 0
