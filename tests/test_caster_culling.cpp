@@ -17,6 +17,7 @@
 #include "scene/generators.h"
 #include "scene/path.h"
 #include "scene/scene.h"
+#include "shadows/stages/caster_culling/caster_culling.h"
 
 namespace penumbra {
 namespace test_caster_culling {
@@ -51,7 +52,7 @@ FrameResult render(const Scene& scene, const CullingCase& technique, bool cullin
   for (const auto& [option, value] : technique.options) options.technique.set(option, value);
   options.width = width;
   options.height = height;
-  options.context.caster_culling = culling;
+  options.context.caster_culling = culling ? CasterCullingMode::On : CasterCullingMode::Off;
   return renderFrame(scene, options);
 }
 
@@ -202,6 +203,27 @@ TEST(CasterCulling, CasterHoldingTheLightIsKept) {
     EXPECT_EQ(on.lights[0].stats.counter("casters_culled"), 0u) << technique;
   }
   expectSameFrames(scene, "light inside a caster's box", 64, 64);
+}
+
+// Auto culls where the scene has at least as many edges as the frame has pixels, and nowhere
+// else: if this failed, the default would pay the receiver mask on small scenes at large frames
+// (measured slower: docs/caster-culling.md) or skip culling on the scenes it is for.
+TEST(CasterCulling, AutoCullsWhereEdgesOutnumberThePixels) {
+  Scene scene = groundScene(vec3(0.0f, 5.0f, 0.0f), 0.2f);
+  scene.finalize();
+  size_t edges = 0;
+  for (const EdgeAdjacency& adjacency : scene.adjacency) edges += adjacency.edges.size();
+  View small, large;
+  small.width = 1;
+  small.height = int(edges);  // exactly as many pixels as edges: culled
+  large.width = 1;
+  large.height = int(edges) + 1;
+  EXPECT_TRUE(castersCulled(CasterCullingMode::Auto, scene, small));
+  EXPECT_FALSE(castersCulled(CasterCullingMode::Auto, scene, large));
+  EXPECT_TRUE(castersCulled(CasterCullingMode::On, scene, large));
+  EXPECT_FALSE(castersCulled(CasterCullingMode::Off, scene, small));
+  EXPECT_EQ(parseCasterCulling("auto"), CasterCullingMode::Auto);
+  EXPECT_THROW(parseCasterCulling("yes"), Error);
 }
 
 }  // namespace test_caster_culling

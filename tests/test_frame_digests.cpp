@@ -86,7 +86,7 @@ FrameOptions frameOptionsFor(const DigestConfig& config) {
   options.context.simd = true;  // SIMD vs scalar identity is tested elsewhere (conformance suite)
   // The counters record the work of every caster; culling leaves the bits as they are and only
   // lowers those counters (tests/test_caster_culling.cpp compares the frames on and off).
-  options.context.caster_culling = false;
+  options.context.caster_culling = CasterCullingMode::Off;
   TechniqueConfig& t = options.technique;
   t = TechniqueConfig(config.technique);
   const auto setIfTaken = [&](const std::string& option, const std::string& value) {

@@ -52,7 +52,7 @@ struct RenderArgs {
   bool scalar = false;
   long long delay_stream = 0;      // bytes of the eye pass's delay stream; 0: none
   bool depth_complexity = false;  // count the eye pass's depth passes and covered pixels
-  std::string caster_culling = "on";
+  std::string caster_culling = "auto";
   std::string occlusion_culling = "on";
   std::string visibility_exr;
   std::string visibility_png;
@@ -175,7 +175,7 @@ int runRender(const RenderArgs& args) {
   }
   options.technique.validate();
   options.context.simd = !args.scalar;
-  options.context.caster_culling = args.caster_culling == "on";
+  options.context.caster_culling = parseCasterCulling(args.caster_culling);
   options.context.show_progress = !args.quiet;
   options.context.threads = args.threads;
   options.delay_stream_bytes = size_t(args.delay_stream);
@@ -283,8 +283,9 @@ Subcommand addRenderCommand(CLI::App& app) {
                 "eye_covered_pixels in --stats)");
   cmd->add_option("--caster-culling", args->caster_culling,
                   "Leave out of the shadow volumes, wedges and potential edges the casters "
-                  "whose shadow reaches no visible point (same image; docs/caster-culling.md)")
-      ->check(CLI::IsMember({"on", "off"}))
+                  "whose shadow reaches no visible point (same image; docs/caster-culling.md); "
+                  "auto: where the scene has at least as many edges as the frame has pixels")
+      ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
   cmd->add_option("--occlusion-culling", args->occlusion_culling,
                   "Skip objects the eye pass can prove hidden (docs/occlusion-culling.md); the "

@@ -26,7 +26,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 // stream, as `penumbra render` has them (--occlusion-culling, --caster-culling, --delay-stream).
 struct FrameSwitches {
   bool occlusion_culling = true;
-  bool caster_culling = true;
+  std::string caster_culling = "auto";  // off, on, auto
   long long delay_stream = 0;  // bytes; 0: none
 };
 
@@ -52,7 +52,7 @@ FrameOptions makeFrameOptions(const std::string& technique, int width, int heigh
   frame.height = height;
   frame.context.threads = threads;
   frame.context.simd = simd;
-  frame.context.caster_culling = switches.caster_culling;
+  frame.context.caster_culling = parseCasterCulling(switches.caster_culling);
   frame.occlusion_culling = switches.occlusion_culling;
   frame.delay_stream_bytes = size_t(switches.delay_stream);
   return frame;
@@ -134,8 +134,8 @@ void bindRender(py::module_& m) {
   m.def(
       "_render",
       [](const std::shared_ptr<Scene>& scene, const std::string& technique, int width, int height,
-         int threads, bool simd, bool occlusion_culling, bool caster_culling,
-         long long delay_stream, const OptionTexts& options) {
+         int threads, bool simd, bool occlusion_culling,
+         const std::string& caster_culling, long long delay_stream, const OptionTexts& options) {
         const FrameOptions frame_options = makeFrameOptions(
             technique, width, height, threads, simd,
             FrameSwitches{occlusion_culling, caster_culling, delay_stream}, options);
@@ -158,7 +158,7 @@ void bindRender(py::module_& m) {
   py::class_<Renderer>(m, "_Renderer")
       .def(py::init([](std::shared_ptr<Scene> scene, const std::string& technique, int width,
                        int height, int threads, bool simd, bool occlusion_culling,
-                       bool caster_culling, long long delay_stream, const OptionTexts& options) {
+                       const std::string& caster_culling, long long delay_stream, const OptionTexts& options) {
              return std::make_unique<Renderer>(
                  std::move(scene),
                  makeFrameOptions(technique, width, height, threads, simd,

@@ -90,6 +90,7 @@ def test_option_keywords_reach_the_technique():
     (lambda: penumbra.render("spheres", technique="volume", width=99999, height=10), "99999"),
     (lambda: penumbra.load_scene("no-such-scene.json"), "no-such-scene.json"),
     (lambda: penumbra.render("spheres", technique="volume", delay_stream=-1), "delay_stream"),
+    (lambda: penumbra.render("spheres", technique="volume", caster_culling="yes"), "yes"),
 ])
 def test_errors_raise_with_the_library_message(call, message):
     with pytest.raises(penumbra.Error, match=message):
@@ -103,9 +104,9 @@ def test_culling_switches_change_the_work_not_the_image():
     # show each switch reached it.
     scene = penumbra.load_scene("interior:1")
     plain = penumbra.render(scene, technique="volume", width=WIDTH, height=HEIGHT,
-                            occlusion_culling=False, caster_culling=False)
+                            occlusion_culling=False, caster_culling="off")
     culled = penumbra.render(scene, technique="volume", width=WIDTH, height=HEIGHT,
-                             delay_stream=1 << 20)
+                             caster_culling="on", delay_stream=1 << 20)
     for a, b in zip(plain.visibility + [plain.color, plain.depth],
                     culled.visibility + [culled.color, culled.depth]):
         assert np.array_equal(a.view(np.uint32), b.view(np.uint32))

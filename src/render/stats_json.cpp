@@ -140,7 +140,7 @@ std::string frameStatsJson(const Scene& scene, const FrameOptions& options,
       // What ran, not what was asked: PENUMBRA_SIMD=off or a scalar-only build overrides it.
       {"simd", useSimd(options.context.simd)},
       {"simd_target", useSimd(options.context.simd) ? simdTargetName() : "scalar"},
-      {"caster_culling", options.context.caster_culling},
+      {"caster_culling", casterCullingName(options.context.caster_culling)},
       {"occlusion_culling", options.occlusion_culling},
       {"machine", {{"cpu", machine.cpu_model}, {"cores", machine.cores}}},
       {"eye_pass", statsToJson(result.eye_stats)},

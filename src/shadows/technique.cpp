@@ -119,6 +119,22 @@ Image<float>& debugLayer(std::vector<DebugLayer>& layers, const std::string& nam
   return layers.back().values;
 }
 
+const char* casterCullingName(CasterCullingMode mode) {
+  switch (mode) {
+    case CasterCullingMode::Off: return "off";
+    case CasterCullingMode::On: return "on";
+    case CasterCullingMode::Auto: return "auto";
+  }
+  return "auto";
+}
+
+CasterCullingMode parseCasterCulling(const std::string& name) {
+  for (const CasterCullingMode mode :
+       {CasterCullingMode::Off, CasterCullingMode::On, CasterCullingMode::Auto})
+    if (name == casterCullingName(mode)) return mode;
+  throw Error(fmt::format("caster culling '{}' is not one of off, on, auto", name));
+}
+
 const DebugLayer* findDebugLayer(const std::vector<DebugLayer>& layers, const std::string& name) {
   for (const DebugLayer& layer : layers)
     if (layer.name == name) return &layer;

@@ -29,6 +29,20 @@
 
 namespace penumbra {
 
+// Whether the shadow stages leave out casters whose shadow reaches no visible point
+// (docs/caster-culling.md). The image is the same in every mode; only the work differs.
+enum class CasterCullingMode {
+  Off,
+  On,
+  // On where the scene has at least as many edges as the frame has pixels: the receiver mask
+  // costs a pass over the pixels, and what culling saves grows with the casters' edges.
+  Auto,
+};
+// "off", "on", "auto": the names `penumbra render --caster-culling` and the stats JSON use.
+const char* casterCullingName(CasterCullingMode mode);
+// The mode of a name above; throws penumbra::Error naming the text and the choices.
+CasterCullingMode parseCasterCulling(const std::string& name);
+
 // Frame-level knobs every technique obeys; they are not technique options.
 struct RenderContext {
   int threads = 0;             // worker threads, 0: all cores (applied by the frame)
@@ -39,7 +53,7 @@ struct RenderContext {
   bool debug_layers = false;
   // Leave out of the shadow volumes, wedges and potential edges every caster whose shadow
   // reaches no visible point (docs/caster-culling.md); the image is the same either way.
-  bool caster_culling = true;
+  CasterCullingMode caster_culling = CasterCullingMode::Auto;
 };
 
 // A picture of one shared stage's work for one light, at the frame's size, as the papers'

@@ -54,10 +54,18 @@ bool boxMayShadow(const Bounds3& box, const Light& light, const View& view,
 
 }  // namespace
 
+bool castersCulled(CasterCullingMode mode, const Scene& scene, const View& view) {
+  if (mode != CasterCullingMode::Auto) return mode == CasterCullingMode::On;
+  // The receiver mask visits every pixel; culling saves work per edge of the culled casters.
+  size_t edges = 0;
+  for (const EdgeAdjacency& adjacency : scene.adjacency) edges += adjacency.edges.size();
+  return edges >= size_t(view.width) * size_t(view.height);
+}
+
 CasterCulling cullCasters(const Scene& scene, const Light& light, const View& view,
-                          const EyeBuffers& eye, bool enabled, Stats& stats) {
+                          const EyeBuffers& eye, CasterCullingMode mode, Stats& stats) {
   CasterCulling culling;
-  if (!enabled) return culling;
+  if (!castersCulled(mode, scene, view)) return culling;
   PassTimer timer(stats, "caster culling");
   const ReceiverMask mask(view, eye, dvec3(light.center));
   const size_t meshes = scene.meshes.size();

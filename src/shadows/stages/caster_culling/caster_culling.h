@@ -29,6 +29,7 @@
 #include "scene/light.h"
 #include "scene/scene.h"
 #include "shadows/stages/caster_culling/caster_culling_counters.h"
+#include "shadows/technique.h"
 
 namespace penumbra {
 
@@ -41,11 +42,15 @@ struct CasterCulling {
   bool mayShadow(size_t mesh) const { return may_shadow.empty() || may_shadow[mesh] != 0; }
 };
 
-// Which meshes of `scene` may shadow a visible point of `eye` from `light`. With `enabled`
-// false every mesh may, and nothing is counted or timed. Otherwise adds the pass
-// "caster culling" and the counters of caster_culling_counters.h to `stats`.
+// Whether `mode` culls in this frame: Auto culls where the scene has at least as many edges as
+// the view has pixels (CasterCullingMode::Auto, docs/caster-culling.md gives the measurements).
+bool castersCulled(CasterCullingMode mode, const Scene& scene, const View& view);
+
+// Which meshes of `scene` may shadow a visible point of `eye` from `light`. Where `mode` does
+// not cull (castersCulled) every mesh may, and nothing is counted or timed. Otherwise adds the
+// pass "caster culling" and the counters of caster_culling_counters.h to `stats`.
 CasterCulling cullCasters(const Scene& scene, const Light& light, const View& view,
-                          const EyeBuffers& eye, bool enabled, Stats& stats);
+                          const EyeBuffers& eye, CasterCullingMode mode, Stats& stats);
 
 // `result` with the culling's pass and counters (cullCasters' `stats`) put before its own, for
 // a technique that culls and then takes a stage's result as its own.
