@@ -253,10 +253,10 @@ json digestScene(const Scene& scene, const std::string& scene_key,
     // Every other configuration with the eye pass's occlusion culling, which must change no
     // buffer (docs/occlusion-culling.md): the same depth, ids and visibility digests, while the
     // eye pass's work counters are the unculled pass's only without it (recorded: culling off).
-    options.occlusion_culling = i % 2 == 1;
+    options.occlusion_culling = i % 2 == 1 ? OcclusionCullingMode::On : OcclusionCullingMode::Off;
     const FrameResult frame = renderFrame(scene, options);
     json eye = eyeDigest(frame);
-    if (options.occlusion_culling && digest.contains("eye"))
+    if (options.occlusion_culling == OcclusionCullingMode::On && digest.contains("eye"))
       eye["counters"] = digest["eye"]["counters"];
     if (!digest.contains("eye")) {
       digest["eye"] = eye;

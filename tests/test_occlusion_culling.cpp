@@ -53,7 +53,7 @@ FrameResult render(const Scene& scene, const std::string& technique, bool cullin
   options.technique = TechniqueConfig(technique);
   options.width = kWidth;
   options.height = kHeight;
-  options.occlusion_culling = culling;
+  options.occlusion_culling = culling ? OcclusionCullingMode::On : OcclusionCullingMode::Off;
   return renderFrame(scene, options);
 }
 

@@ -53,7 +53,7 @@ struct RenderArgs {
   long long delay_stream = 0;      // bytes of the eye pass's delay stream; 0: none
   bool depth_complexity = false;  // count the eye pass's depth passes and covered pixels
   std::string caster_culling = "auto";
-  std::string occlusion_culling = "on";
+  std::string occlusion_culling = "auto";
   std::string visibility_exr;
   std::string visibility_png;
   std::string depth_exr;
@@ -180,7 +180,7 @@ int runRender(const RenderArgs& args) {
   options.context.threads = args.threads;
   options.delay_stream_bytes = size_t(args.delay_stream);
   options.depth_complexity = args.depth_complexity;
-  options.occlusion_culling = args.occlusion_culling == "on";
+  options.occlusion_culling = parseOcclusionCulling(args.occlusion_culling);
   options.width = args.width;
   options.height = args.height;
   requireExtension(args.output, ".png", "output");
@@ -289,8 +289,9 @@ Subcommand addRenderCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--occlusion-culling", args->occlusion_culling,
                   "Skip objects the eye pass can prove hidden (docs/occlusion-culling.md); the "
-                  "image is the same either way")
-      ->check(CLI::IsMember({"on", "off"}))
+                  "image is the same either way. auto: where the scene has at least half as "
+                  "many triangles as the frame has pixels")
+      ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
   cmd->add_option("--frames", args->frames,
                   "Time N warm frames (technique prepared once) and print min / median / max "

@@ -104,13 +104,13 @@ def _option_texts(options):
 
 
 def render(scene, technique="exact", width=None, height=None, threads=0, simd=True,
-           occlusion_culling=True, caster_culling="auto", delay_stream=0, **options):
+           occlusion_culling="auto", caster_culling="auto", delay_stream=0, **options):
     """Renders one frame of `scene` (a Scene, or anything load_scene takes).
 
     technique: a name from penumbra.techniques(); its options are keywords (tile_size=8,
     cull="zmax", smooth=True), listed below. width, height: the frame's size (None: the
     scene's). threads: worker threads (0: all cores). simd=False runs every kernel's scalar
-    twin (identical images). occlusion_culling (bool), caster_culling ("auto", "on", "off"),
+    twin (identical images). occlusion_culling and caster_culling ("auto", "on", "off"),
     delay_stream (bytes, 0: none): the eye pass's object culling, the shadow stages' caster
     culling and the eye pass's delay stream, as `penumbra render` has them; none changes the
     images, only the work and counters. Returns a Frame: .color (H x W x 3 float32), .visibility (one
@@ -143,7 +143,7 @@ class Renderer:
     """
 
     def __init__(self, scene, technique="exact", width=None, height=None, threads=0, simd=True,
-                 occlusion_culling=True, caster_culling="auto", delay_stream=0, **options):
+                 occlusion_culling="auto", caster_culling="auto", delay_stream=0, **options):
         if not isinstance(scene, Scene):
             scene = load_scene(scene)
         self._renderer = _penumbra._Renderer(scene, technique, width or 0, height or 0, threads,

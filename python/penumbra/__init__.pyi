@@ -97,14 +97,14 @@ def builtin_scenes() -> list[str]: ...
 def techniques() -> list[dict[str, Any]]: ...
 def render(scene: Scene | SceneSource, technique: str = "exact", width: int | None = None,
            height: int | None = None, threads: int = 0, simd: bool = True,
-           occlusion_culling: bool = True, caster_culling: str = "auto", delay_stream: int = 0,
+           occlusion_culling: str = "auto", caster_culling: str = "auto", delay_stream: int = 0,
            **options: OptionValue) -> Frame: ...
 
 
 class Renderer:
     def __init__(self, scene: Scene | SceneSource, technique: str = "exact",
                  width: int | None = None, height: int | None = None, threads: int = 0,
-                 simd: bool = True, occlusion_culling: bool = True, caster_culling: str = "auto",
+                 simd: bool = True, occlusion_culling: str = "auto", caster_culling: str = "auto",
                  delay_stream: int = 0, **options: OptionValue) -> None: ...
     def render(self) -> Frame: ...
     @property

@@ -25,7 +25,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 // The frame options that are not the technique's: the culling switches and the eye pass's delay
 // stream, as `penumbra render` has them (--occlusion-culling, --caster-culling, --delay-stream).
 struct FrameSwitches {
-  bool occlusion_culling = true;
+  std::string occlusion_culling = "auto";  // off, on, auto
   std::string caster_culling = "auto";  // off, on, auto
   long long delay_stream = 0;  // bytes; 0: none
 };
@@ -53,7 +53,7 @@ FrameOptions makeFrameOptions(const std::string& technique, int width, int heigh
   frame.context.threads = threads;
   frame.context.simd = simd;
   frame.context.caster_culling = parseCasterCulling(switches.caster_culling);
-  frame.occlusion_culling = switches.occlusion_culling;
+  frame.occlusion_culling = parseOcclusionCulling(switches.occlusion_culling);
   frame.delay_stream_bytes = size_t(switches.delay_stream);
   return frame;
 }
@@ -134,7 +134,7 @@ void bindRender(py::module_& m) {
   m.def(
       "_render",
       [](const std::shared_ptr<Scene>& scene, const std::string& technique, int width, int height,
-         int threads, bool simd, bool occlusion_culling,
+         int threads, bool simd, const std::string& occlusion_culling,
          const std::string& caster_culling, long long delay_stream, const OptionTexts& options) {
         const FrameOptions frame_options = makeFrameOptions(
             technique, width, height, threads, simd,
@@ -157,7 +157,7 @@ void bindRender(py::module_& m) {
 
   py::class_<Renderer>(m, "_Renderer")
       .def(py::init([](std::shared_ptr<Scene> scene, const std::string& technique, int width,
-                       int height, int threads, bool simd, bool occlusion_culling,
+                       int height, int threads, bool simd, const std::string& occlusion_culling,
                        const std::string& caster_culling, long long delay_stream, const OptionTexts& options) {
              return std::make_unique<Renderer>(
                  std::move(scene),

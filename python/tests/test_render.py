@@ -104,9 +104,9 @@ def test_culling_switches_change_the_work_not_the_image():
     # show each switch reached it.
     scene = penumbra.load_scene("interior:1")
     plain = penumbra.render(scene, technique="volume", width=WIDTH, height=HEIGHT,
-                            occlusion_culling=False, caster_culling="off")
+                            occlusion_culling="off", caster_culling="off")
     culled = penumbra.render(scene, technique="volume", width=WIDTH, height=HEIGHT,
-                             caster_culling="on", delay_stream=1 << 20)
+                             occlusion_culling="on", caster_culling="on", delay_stream=1 << 20)
     for a, b in zip(plain.visibility + [plain.color, plain.depth],
                     culled.visibility + [culled.color, culled.depth]):
         assert np.array_equal(a.view(np.uint32), b.view(np.uint32))

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <utility>
 
+#include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "raster/eye_pass.h"
@@ -12,6 +13,29 @@
 
 namespace penumbra {
 
+const char* occlusionCullingName(OcclusionCullingMode mode) {
+  switch (mode) {
+    case OcclusionCullingMode::Off: return "off";
+    case OcclusionCullingMode::On: return "on";
+    case OcclusionCullingMode::Auto: return "auto";
+  }
+  return "auto";
+}
+
+OcclusionCullingMode parseOcclusionCulling(const std::string& name) {
+  for (const OcclusionCullingMode mode :
+       {OcclusionCullingMode::Off, OcclusionCullingMode::On, OcclusionCullingMode::Auto})
+    if (name == occlusionCullingName(mode)) return mode;
+  throw Error(fmt::format("occlusion culling '{}' is not one of off, on, auto", name));
+}
+
+bool occlusionCulled(OcclusionCullingMode mode, const Scene& scene, int width, int height) {
+  if (mode != OcclusionCullingMode::Auto) return mode == OcclusionCullingMode::On;
+  // The culler's traversal and occluder pass cost about a pass over the pixels; what it saves
+  // grows with the hidden triangles.
+  return 2 * scene.triangleCount() >= size_t(width) * size_t(height);
+}
+
 FrameRenderer::~FrameRenderer() = default;
 
 FrameRenderer::FrameRenderer(const Scene& scene, FrameOptions options)
@@ -20,7 +44,10 @@ FrameRenderer::FrameRenderer(const Scene& scene, FrameOptions options)
   const auto start = std::chrono::steady_clock::now();
   technique_ = prepareTechnique(options_.technique, scene_);
   shading_triangles_ = std::make_unique<ShadingTriangleTable>(scene_);
-  if (options_.occlusion_culling) occlusion_ = std::make_unique<OcclusionCuller>(scene_);
+  const int width = options_.width > 0 ? options_.width : scene_.settings.width;
+  const int height = options_.height > 0 ? options_.height : scene_.settings.height;
+  if (occlusionCulled(options_.occlusion_culling, scene_, width, height))
+    occlusion_ = std::make_unique<OcclusionCuller>(scene_);
   prepare_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }

@@ -13,6 +13,14 @@
 
 namespace penumbra {
 
+// Off, on, or on where it pays (the culler's own pass costs more than it saves where little is
+// hidden in few triangles: docs/occlusion-culling.md, "Measured").
+enum class OcclusionCullingMode { Off, On, Auto };
+// "off", "on", "auto", as `penumbra render --occlusion-culling` and the stats JSON name them.
+const char* occlusionCullingName(OcclusionCullingMode mode);
+// The mode of a name above; throws penumbra::Error naming the text and the choices.
+OcclusionCullingMode parseOcclusionCulling(const std::string& name);
+
 struct FrameOptions {
   TechniqueConfig technique;  // the technique and its own options
   int width = 0;              // 0: the scene's settings
@@ -26,9 +34,10 @@ struct FrameOptions {
   // counted with a delay stream.
   bool depth_complexity = false;
   // Object-level occlusion culling in the eye pass (docs/occlusion-culling.md): hidden objects
-  // are not rasterized. Every output is bit-identical either way; only the eye pass's work and
-  // counters change.
-  bool occlusion_culling = true;
+  // are not rasterized. Every output is bit-identical in every mode; only the eye pass's work
+  // and counters change. Auto culls where the scene has at least half as many triangles as the
+  // frame has pixels (occlusionCulled).
+  OcclusionCullingMode occlusion_culling = OcclusionCullingMode::Auto;
 };
 
 struct FrameResult {
@@ -43,6 +52,9 @@ struct FrameResult {
 // Renders frame after frame of one scene with one technique, prepared once (per-scene state
 // such as the oracle's BVH: shadows/technique.h). The scene must outlive the renderer and stay
 // unchanged.
+// Whether `mode` culls frames of `scene` at width x height.
+bool occlusionCulled(OcclusionCullingMode mode, const Scene& scene, int width, int height);
+
 class ShadingTriangleTable;
 class OcclusionCuller;
 
